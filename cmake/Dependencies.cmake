@@ -1,0 +1,24 @@
+# Every third-party library, found the way ../shared/notes/debian-packages.md documents for Debian 12.
+find_package(PkgConfig REQUIRED)
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(fmt REQUIRED)
+find_package(spdlog REQUIRED)          # compiled library (SPDLOG_COMPILED_LIB), not header-only
+find_package(assimp REQUIRED)
+find_package(ccd REQUIRED)
+find_package(GTest REQUIRED)
+find_package(benchmark REQUIRED)
+find_package(PNG REQUIRED)
+find_package(Threads REQUIRED)
+find_package(OpenSSL REQUIRED)        # SHA-256 of scene files (libcrypto)
+# Bullet in double precision only: the pkg-config target carries -DBT_USE_DOUBLE_PRECISION.
+pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
+# qhull's reentrant C library (libqhull_r); the C++ wrapper is not needed.
+find_library(QHULL_R_LIBRARY NAMES qhull_r REQUIRED)
+find_path(QHULL_R_INCLUDE_DIR libqhull_r/libqhull_r.h REQUIRED)
+add_library(vroc_qhull INTERFACE)
+target_link_libraries(vroc_qhull INTERFACE ${QHULL_R_LIBRARY})
+target_include_directories(vroc_qhull SYSTEM INTERFACE ${QHULL_R_INCLUDE_DIR})
+# OSMesa for the offscreen renderer. Never link libGL into the same binary (see the notes).
+pkg_check_modules(OSMESA IMPORTED_TARGET osmesa)
