@@ -18,6 +18,9 @@ struct ConvexPolyhedron {
 
     /// Convex hull of the points (qhull), coplanar facets merged into polygons.
     /// Throws GeometryError for fewer than 4 points, non-finite points, or (nearly) coplanar input.
+    /// Tolerances scale with the points' bounding-box diagonal L: facets within 1e-9 L of coplanar
+    /// are merged; the result is checked planar and convex within 1e-8 L, and input points lie
+    /// inside it within 1e-8 L. Vertices are exact input points, numbered in input order.
     static ConvexPolyhedron fromPoints(std::span<const Vec3> points);
     /// Axis-aligned box centred at the origin with the given half extents [m].
     static ConvexPolyhedron box(const Vec3& half_extents);

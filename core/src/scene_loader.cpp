@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+// Strict loader for `vroc-scene/1` (docs/scene-format.md): top level, materials and bodies.
+#include "vroc/core/scene_loader.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "did_you_mean.h"
+#include "scene_loader_internal.h"
+#include "sha256.h"
+#include "vroc/core/errors.h"
+
+namespace vroc {
+
+namespace {
+
+constexpr const char* kFormat = "vroc-scene/1";
+
+std::vector<Material> readMaterials(const JsonReader& r) {
+    r.requireObject();
+    std::vector<Material> materials;
+    for (const std::string& name : r.keys()) {
+        const JsonReader m = r.at(name);
+        if (name.empty()) m.fail("expected a non-empty material name");
+        m.requireObject({"restitution", "friction"});
+        materials.push_back({name, m.at("restitution").inRange(0.0, 1.0, ""), m.at("friction").nonNegative("")});
+    }
+    if (materials.empty()) r.fail("expected at least one material");
+    return materials;
+}
+
+int findMaterial(const JsonReader& r, const std::vector<Material>& materials) {
+    const std::string name = r.string();
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        if (materials[i].name == name) return static_cast<int>(i);
+        names.push_back(materials[i].name);
+    }
+    r.fail(fmt::format("unknown material `{}`; did you mean `{}`? (materials: {})", name,
+                       nearestWord(name, names), fmt::format("{}", fmt::join(names, ", "))));
+}
+
+// Real bodies are the static model of the real world: they take no mass, inertia or velocity.
+void rejectDynamicKeys(const JsonReader& body) {
+    for (const char* key : {"mass", "inertia", "linear_velocity", "angular_velocity"})
+        if (auto v = body.find(key))
+            v->fail(fmt::format("`{}` is not allowed on a real body (real bodies are static: infinite mass, "
+                                "zero velocity); remove it or make the body \"virtual\"", key));
+}
+
+MassProperties readMassProperties(const JsonReader& body, const Shape& shape) {
+    const double mass = body.at("mass").positive(" [kg]");
+    MassProperties props;
+    try {
+        props = massProperties(shape, mass);
+    } catch (const GeometryError& e) {
+        body.at("shape").fail(fmt::format("cannot compute mass properties: {}", e.what()));
+    }
+    if (auto inertia = body.find("inertia")) props.inertia = readInertia(*inertia);
+    return props;
+}
+
+Body readBody(const JsonReader& r, const std::vector<Material>& materials, const std::filesystem::path& base_dir) {
+    r.requireObject({"name", "role", "material", "mass", "shape", "position", "orientation", "linear_velocity",
+                     "angular_velocity", "inertia"});
+    Body body;
+    body.name = r.at("name").string();
+    if (body.name.empty()) r.at("name").fail("expected a non-empty body name");
+    const JsonReader role = r.at("role");
+    const std::string role_name = role.string();
+    if (role_name != "real" && role_name != "virtual")
+        role.fail(fmt::format("expected \"real\" or \"virtual\", got \"{}\"", role_name));
+    body.role = role_name == "real" ? BodyRole::Real : BodyRole::Virtual;
+    body.material = findMaterial(r.at("material"), materials);
+    body.shape = readShape(r.at("shape"), base_dir);
+    body.pose.position = r.at("position").vec3();
+    if (auto q = r.find("orientation")) body.pose.orientation = q->quaternion();
+    if (body.role == BodyRole::Real) {
+        rejectDynamicKeys(r);
+        return body;   // mass properties stay zero: static, infinite mass
+    }
+    body.mass_properties = readMassProperties(r, body.shape);
+    if (auto v = r.find("linear_velocity")) body.linear_velocity = v->vec3();
+    if (auto w = r.find("angular_velocity")) body.angular_velocity = w->vec3();
+    return body;
+}
+
+std::vector<Body> readBodies(const JsonReader& r, const std::vector<Material>& materials,
+                             const std::filesystem::path& base_dir) {
+    if (r.arraySize() == 0) r.fail("expected at least one body");
+    std::vector<Body> bodies;
+    for (std::size_t i = 0; i < r.arraySize(); ++i) {
+        const JsonReader b = r.element(i);
+        bodies.push_back(readBody(b, materials, base_dir));
+        for (std::size_t j = 0; j < i; ++j)
+            if (bodies[j].name == bodies[i].name)
+                b.at("name").fail(fmt::format("duplicate body name `{}` (also bodies[{}]); names must be unique",
+                                              bodies[i].name, j));
+    }
+    return bodies;
+}
+
+Scene readScene(const JsonReader& root, const std::filesystem::path& base_dir) {
+    root.requireObject();
+    const JsonReader format = root.at("format");
+    if (!format.isString() || format.string() != kFormat)
+        format.fail(fmt::format("expected \"{}\", got {}", kFormat, format.describe()));
+    root.requireObject({"format", "name", "description", "gravity", "frame_dt", "collision_distance",
+                        "materials", "bodies"});
+    Scene scene;
+    scene.name = root.at("name").string();
+    if (auto d = root.find("description")) scene.description = d->string();
+    if (auto g = root.find("gravity")) scene.gravity = g->vec3();
+    if (auto dt = root.find("frame_dt")) scene.frame_dt = dt->positive(" [s]");
+    if (auto cd = root.find("collision_distance")) scene.collision_distance = cd->positive(" [m]");
+    scene.materials = readMaterials(root.at("materials"));
+    scene.bodies = readBodies(root.at("bodies"), scene.materials, base_dir);
+    return scene;
+}
+
+}  // namespace
+
+Scene loadSceneFromString(const std::string& json_text, const std::string& origin) {
+    const JsonDocument document(json_text, origin);
+    Scene scene = readScene(document.root(), std::filesystem::path(origin).parent_path());
+    scene.source_sha256 = sha256Hex(json_text);
+    return scene;
+}
+
+Scene loadScene(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw InputError(fmt::format("{}: scene file not found or not a regular file (expected a readable vroc-scene/1 JSON file)", path));
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) throw InputError(fmt::format("{}: cannot read scene file", path));
+    Scene scene = loadSceneFromString(text, path);
+    scene.source_path = path;
+    return scene;
+}
+
+}  // namespace vroc

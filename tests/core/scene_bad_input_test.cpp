@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: MIT
+// One test per bad-input class of issue 3 ("Bad input"): each asserts that the loader throws
+// InputError with one line naming the file, the field (JSON path, or line and column for syntax
+// errors) and what was expected. Expected line/column numbers are counted by hand in the text.
+#include <gtest/gtest.h>
+
+#include <initializer_list>
+#include <string>
+
+#include "vroc/core/errors.h"
+#include "vroc/core/scene_loader.h"
+
+namespace vroc {
+namespace {
+
+const std::string kDataDir = std::string(VROC_SOURCE_DIR) + "/tests/data/scenes";
+const std::string kOrigin = kDataDir + "/inline.json";
+
+// The message of the InputError that loading `text` throws ("" and a test failure if none).
+std::string errorOf(const std::string& text) {
+    try {
+        loadSceneFromString(text, kOrigin);
+    } catch (const InputError& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "expected InputError, got another exception: " << e.what();
+        return "";
+    }
+    ADD_FAILURE() << "expected InputError for:\n" << text;
+    return "";
+}
+
+// Every message: starts with the file, is one line, and contains each of `parts`.
+void expectMessage(const std::string& message, std::initializer_list<std::string> parts,
+                   const std::string& file = kOrigin) {
+    EXPECT_EQ(message.rfind(file, 0), 0u) << "message does not start with the file: " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "message is not one line: " << message;
+    for (const std::string& p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
+}
+
+void expectError(const std::string& text, std::initializer_list<std::string> parts) {
+    expectMessage(errorOf(text), parts);
+}
+
+const std::string kMaterials = R"("materials": {"rubber": {"restitution": 0.5, "friction": 0.8}})";
+const std::string kFloor = R"({"name": "floor", "role": "real", "material": "rubber", "position": [0, 0, 0],
+                               "shape": {"box": {"half_extents": [1, 1, 1]}}})";
+
+std::string sceneWith(const std::string& bodies, const std::string& top = "", const std::string& materials = kMaterials) {
+    return R"({"format": "vroc-scene/1", "name": "t", )" + top + materials + R"(, "bodies": [)" + bodies + "]}";
+}
+
+std::string sceneWithMaterial(const std::string& rubber) {
+    return sceneWith(kFloor, "", R"("materials": {"rubber": )" + rubber + "}");
+}
+
+// A virtual ball body; `extra` adds keys, `shape` and `mass` replace the defaults.
+std::string ball(const std::string& extra = "", const std::string& shape = R"({"sphere": {"radius": 0.1}})",
+                 const std::string& mass = "1") {
+    return R"({"name": "ball", "role": "virtual", "material": "rubber", "mass": )" + mass +
+           R"(, "position": [0, 0, 1], "shape": )" + shape + extra + "}";
+}
+
+std::string withBall(const std::string& extra = "", const std::string& shape = R"({"sphere": {"radius": 0.1}})",
+                     const std::string& mass = "1") {
+    return sceneWith(kFloor + ", " + ball(extra, shape, mass));
+}
+
+TEST(SceneBadInput, ValidBaseSceneLoads) {
+    // The fixtures below each break one thing in this scene.
+    EXPECT_NO_THROW(loadSceneFromString(withBall(), kOrigin));
+}
+
+TEST(SceneBadInput, MissingFile) {
+    const std::string path = kDataDir + "/no_such_scene.json";
+    try {
+        loadScene(path);
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        expectMessage(e.what(), {"not found", "vroc-scene/1"}, path);
+    }
+    try {
+        loadScene(kDataDir);   // a directory is not a scene file
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        expectMessage(e.what(), {"not a regular file"}, kDataDir);
+    }
+}
+
+TEST(SceneBadInput, TruncatedJsonGivesLineAndColumn) {
+    // Line 3 is `  "bodies": [` (13 characters): the input ends just after it, at column 14.
+    const std::string text = "{\n  \"format\": \"vroc-scene/1\",\n  \"bodies\": [";
+    expectError(text, {kOrigin + ":3:14: invalid JSON", "unexpected end of input"});
+}
+
+TEST(SceneBadInput, InvalidJsonGivesLineAndColumn) {
+    // Line 3 is `  "name": @,`: the '@' is at column 11.
+    const std::string text = "{\n  \"format\": \"vroc-scene/1\",\n  \"name\": @,\n}";
+    expectError(text, {kOrigin + ":3:11: invalid JSON", "syntax error"});
+    // A trailing comma (not JSON): line 2 is `  "name": "t",` and the '}' on line 3 is at column 1.
+    expectError("{\"format\": \"vroc-scene/1\",\n  \"name\": \"t\",\n}", {kOrigin + ":3:1: invalid JSON"});
+    // Empty input.
+    expectError("", {kOrigin + ":1:1: invalid JSON"});
+}
+
+TEST(SceneBadInput, DuplicateJsonKey) {
+    expectError(withBall(R"(, "mass": 2)"), {"bodies[1]: duplicate key `mass`"});
+}
+
+TEST(SceneBadInput, WrongFormat) {
+    expectError(R"({"format": "vroc-scene/2", "name": "t"})",
+                {": format: expected \"vroc-scene/1\"", "\"vroc-scene/2\""});
+    expectError(R"({"format": 1})", {": format: expected \"vroc-scene/1\", got 1"});
+    expectError(R"({"name": "t"})", {": missing required key `format`"});
+    expectError(R"([1, 2])", {"expected an object, got an array"});
+}
+
+TEST(SceneBadInput, UnknownKeyWithSuggestion) {
+    // In a material, a body, a shape and at top level.
+    expectError(sceneWithMaterial(R"({"restituion": 0.5, "friction": 0.8})"),
+                {"materials.rubber: unknown key `restituion`; did you mean `restitution`?"});
+    expectError(withBall(R"(, "angular_velocty": [0, 0, 1])"),
+                {"bodies[1]: unknown key `angular_velocty`; did you mean `angular_velocity`?"});
+    expectError(withBall("", R"({"sphere": {"raduis": 0.1}})"),
+                {"bodies[1].shape.sphere: unknown key `raduis`; did you mean `radius`?"});
+    expectError(withBall("", R"({"spere": {"radius": 0.1}})"),
+                {"bodies[1].shape: unknown key `spere`; did you mean `sphere`?"});
+    expectError(sceneWith(kFloor, R"("gravty": [0, 0, -9.81], )"), {": unknown key `gravty`; did you mean `gravity`?"});
+}
+
+TEST(SceneBadInput, MissingRequiredKey) {
+    expectError(sceneWith(R"({"name": "floor", "role": "real", "material": "rubber", "position": [0, 0, 0]})"),
+                {"bodies[0]: missing required key `shape`"});
+    expectError(sceneWith(R"({"name": "b", "role": "virtual", "material": "rubber", "position": [0, 0, 0],
+                              "shape": {"sphere": {"radius": 1}}})"),
+                {"bodies[0]: missing required key `mass`"});
+    expectError(sceneWithMaterial(R"({"restitution": 0.5})"),
+                {"materials.rubber: missing required key `friction`"});
+    expectError(R"({"format": "vroc-scene/1", "name": "t", )" + kMaterials + "}", {": missing required key `bodies`"});
+}
+
+TEST(SceneBadInput, WrongType) {
+    expectError(withBall("", R"({"sphere": {"radius": 0.1}})", R"("heavy")"),
+                {"bodies[1].mass: expected a number, got the string \"heavy\""});
+    expectError(withBall(R"(, "linear_velocity": [1, 2])"),
+                {"bodies[1].linear_velocity: expected an array of 3 numbers [x, y, z], got an array"});
+    expectError(withBall(R"(, "angular_velocity": [1, true, 3])"),
+                {"bodies[1].angular_velocity[1]: expected a number, got true"});
+    expectError(sceneWith(kFloor, R"("frame_dt": "1/60", )"), {": frame_dt: expected a number, got the string"});
+    expectError(R"({"format": "vroc-scene/1", "name": 5})", {": name: expected a string, got 5"});
+    expectError(withBall("", R"({"sphere": [0.1]})"), {"bodies[1].shape.sphere: expected an object, got an array"});
+}
+
+TEST(SceneBadInput, NonFiniteNumber) {
+    // JSON has no NaN or Infinity literal; a number too large for a double (1e999) is rejected
+    // at parse time with the line and column where it starts. Line 2 is `"gravity": [0, 0, 1e999],`:
+    // '1e999' starts at column 19.
+    const std::string text = "{\"format\": \"vroc-scene/1\",\n\"gravity\": [0, 0, 1e999],\n\"name\": \"t\"}";
+    expectError(text, {kOrigin + ":2:19: invalid JSON", "number overflow parsing '1e999'", "not a finite double"});
+    expectError("{\"mass\": -1e999}", {kOrigin + ":1:10: invalid JSON", "'-1e999'"});
+    // NaN / Infinity words are simply invalid JSON.
+    expectError("{\"mass\": NaN}", {kOrigin + ":1:10: invalid JSON"});
+    expectError("{\"mass\": Infinity}", {kOrigin + ":1:10: invalid JSON"});
+}
+
+TEST(SceneBadInput, ZeroOrNegativeMass) {
+    expectError(withBall("", R"({"sphere": {"radius": 0.1}})", "0"), {"bodies[1].mass: expected a number > 0 [kg], got 0"});
+    expectError(withBall("", R"({"sphere": {"radius": 0.1}})", "-2.5"), {"bodies[1].mass: expected a number > 0 [kg], got -2.5"});
+}
+
+TEST(SceneBadInput, MassOnARealBody) {
+    expectError(sceneWith(R"({"name": "floor", "role": "real", "material": "rubber", "mass": 5, "position": [0, 0, 0],
+                              "shape": {"box": {"half_extents": [1, 1, 1]}}})"),
+                {"bodies[0].mass: `mass` is not allowed on a real body"});
+    expectError(sceneWith(R"({"name": "floor", "role": "real", "material": "rubber", "linear_velocity": [1, 0, 0],
+                              "position": [0, 0, 0], "shape": {"box": {"half_extents": [1, 1, 1]}}})"),
+                {"bodies[0].linear_velocity: `linear_velocity` is not allowed on a real body"});
+}
+
+TEST(SceneBadInput, NonPositiveRadiusOrExtent) {
+    expectError(withBall("", R"({"sphere": {"radius": 0}})"), {"bodies[1].shape.sphere.radius: expected a number > 0 [m], got 0"});
+    expectError(withBall("", R"({"sphere": {"radius": -0.1}})"), {"bodies[1].shape.sphere.radius: expected a number > 0 [m], got -0.1"});
+    expectError(withBall("", R"({"box": {"half_extents": [1, -0.5, 1]}})"),
+                {"bodies[1].shape.box.half_extents[1]: expected a number > 0 [m], got -0.5"});
+    expectError(withBall("", R"({"box": {"half_extents": [0, 1, 1]}})"),
+                {"bodies[1].shape.box.half_extents[0]: expected a number > 0 [m], got 0"});
+    expectError(withBall("", R"({"mesh": {"file": "tetra.obj", "scale": [1, 0, 1]}})"),
+                {"bodies[1].shape.mesh.scale[1]: expected a number > 0, got 0"});
+}
+
+TEST(SceneBadInput, DegenerateHull) {
+    expectError(withBall("", R"({"hull": {"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}})"),
+                {"bodies[1].shape.hull.points: degenerate hull of 3 points", "expected at least 4 points not all in one plane"});
+    expectError(withBall("", R"({"hull": {"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0.5, 0.5, 0]]}})"),
+                {"bodies[1].shape.hull.points: degenerate hull of 5 points"});
+    expectError(withBall("", R"({"mesh": {"file": "flat.obj"}})"),
+                {"bodies[1].shape.mesh.file: degenerate hull of mesh", "flat.obj"});
+}
+
+TEST(SceneBadInput, MissingMeshFile) {
+    expectError(withBall("", R"({"mesh": {"file": "meshes/nope.obj"}})"),
+                {"bodies[1].shape.mesh.file: mesh file '" + kDataDir + "/meshes/nope.obj' not found",
+                 "relative to the scene file"});
+}
+
+TEST(SceneBadInput, UnreadableMesh) {
+    expectError(withBall("", R"({"mesh": {"file": "truncated.stl"}})"),
+                {"bodies[1].shape.mesh.file: cannot read mesh file '" + kDataDir + "/truncated.stl'",
+                 "expected OBJ, STL, PLY or glTF"});
+    expectError(withBall("", R"({"mesh": {"file": "not_a_mesh.xyz"}})"),
+                {"bodies[1].shape.mesh.file: cannot read mesh file '" + kDataDir + "/not_a_mesh.xyz'"});
+}
+
+TEST(SceneBadInput, UnknownMaterial) {
+    expectError(sceneWith(kFloor + R"(, {"name": "ball", "role": "virtual", "material": "rubbr", "mass": 1,
+                                        "position": [0, 0, 1], "shape": {"sphere": {"radius": 0.1}}})"),
+                {"bodies[1].material: unknown material `rubbr`; did you mean `rubber`?"});
+}
+
+TEST(SceneBadInput, DuplicateBodyName) {
+    expectError(sceneWith(kFloor + ", " + kFloor), {"bodies[1].name: duplicate body name `floor` (also bodies[0])"});
+}
+
+TEST(SceneBadInput, ZeroQuaternion) {
+    expectError(withBall(R"(, "orientation": [0, 0, 0, 0])"),
+                {"bodies[1].orientation: expected a non-zero quaternion [x, y, z, w]", "got |q| = 0"});
+    expectError(withBall(R"(, "orientation": [1e-10, 0, 0, 0])"), {"bodies[1].orientation: expected a non-zero quaternion"});
+    expectError(withBall(R"(, "orientation": [0, 0, 1])"), {"bodies[1].orientation: expected a quaternion [x, y, z, w]"});
+}
+
+TEST(SceneBadInput, RestitutionOutsideUnitIntervalOrNegativeFriction) {
+    const auto withMaterial = sceneWithMaterial;
+    expectError(withMaterial(R"({"restitution": 1.5, "friction": 0.5})"),
+                {"materials.rubber.restitution: expected a number in [0, 1], got 1.5"});
+    expectError(withMaterial(R"({"restitution": -0.1, "friction": 0.5})"),
+                {"materials.rubber.restitution: expected a number in [0, 1], got -0.1"});
+    expectError(withMaterial(R"({"restitution": 0.5, "friction": -0.2})"),
+                {"materials.rubber.friction: expected a number >= 0, got -0.2"});
+}
+
+TEST(SceneBadInput, NonPositiveFrameDtOrCollisionDistance) {
+    expectError(sceneWith(kFloor, R"("frame_dt": 0, )"), {": frame_dt: expected a number > 0 [s], got 0"});
+    expectError(sceneWith(kFloor, R"("frame_dt": -0.01, )"), {": frame_dt: expected a number > 0 [s], got -0.01"});
+    expectError(sceneWith(kFloor, R"("collision_distance": 0, )"), {": collision_distance: expected a number > 0 [m], got 0"});
+}
+
+TEST(SceneBadInput, ShapeMustBeExactlyOneKind) {
+    expectError(withBall("", R"({"sphere": {"radius": 0.1}, "box": {"half_extents": [1, 1, 1]}})"),
+                {"bodies[1].shape: expected exactly one of sphere, box, hull, mesh, compound; got `sphere`, `box`"});
+    expectError(withBall("", "{}"), {"bodies[1].shape: expected exactly one of", "got none"});
+    expectError(withBall("", R"({"mesh": {"file": "tetra.obj", "mode": "convex"}})"),
+                {"bodies[1].shape.mesh.mode: expected \"hull\" or \"parts\", got \"convex\""});
+    expectError(withBall("", R"({"compound": {"parts": []}})"), {"bodies[1].shape.compound.parts: expected at least one part"});
+}
+
+TEST(SceneBadInput, BadRoleAndEmptyLists) {
+    expectError(sceneWith(R"({"name": "floor", "role": "ghost", "material": "rubber", "position": [0, 0, 0],
+                              "shape": {"box": {"half_extents": [1, 1, 1]}}})"),
+                {"bodies[0].role: expected \"real\" or \"virtual\", got \"ghost\""});
+    expectError(sceneWith(""), {": bodies: expected at least one body"});
+    expectError(R"({"format": "vroc-scene/1", "name": "t", "materials": {}, "bodies": [1]})",
+                {": materials: expected at least one material"});
+}
+
+TEST(SceneBadInput, InvalidInertiaOverride) {
+    expectError(withBall(R"(, "inertia": [1, 1, 0])"), {"bodies[1].inertia[2]: expected a number > 0 [kg m^2], got 0"});
+    expectError(withBall(R"(, "inertia": [1, 1, 3])"), {"bodies[1].inertia: principal moments", "triangle inequality"});
+    expectError(withBall(R"(, "inertia": [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]])"),
+                {"bodies[1].inertia: expected a symmetric matrix"});
+    // Symmetric but indefinite: eigenvalues of [[1, 2], [2, 1]] are 3 and -1.
+    expectError(withBall(R"(, "inertia": [[1, 2, 0], [2, 1, 0], [0, 0, 1]])"),
+                {"bodies[1].inertia: expected a positive-definite inertia"});
+    expectError(withBall(R"(, "inertia": 1)"), {"bodies[1].inertia: expected [Ixx, Iyy, Izz] or a 3x3 matrix"});
+}
+
+}  // namespace
+}  // namespace vroc
