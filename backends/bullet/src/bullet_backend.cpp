@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: MIT
+#include "bullet_backend.h"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <cmath>
+#include <string>
+
+#include "bullet_convert.h"
+#include "material_combine.h"
+#include "principal_frame.h"
+#include "vroc/core/errors.h"
+
+namespace vroc::bullet {
+namespace {
+
+bool finite(const btTransform& t, const btVector3& v, const btVector3& w) {
+    const btMatrix3x3& m = t.getBasis();
+    return fromBt(t.getOrigin()).allFinite() && fromBt(m[0]).allFinite() && fromBt(m[1]).allFinite() &&
+           fromBt(m[2]).allFinite() && fromBt(v).allFinite() && fromBt(w).allFinite();
+}
+
+// Everything addBody() relies on, checked before any body enters the world (a throw half-way
+// would leave Bullet holding bodies that are being destroyed).
+void validate(const Scene& scene) {
+    for (const Body& body : scene.bodies) {
+        if (body.material < 0 || static_cast<std::size_t>(body.material) >= scene.materials.size())
+            throw InputError("scene '" + scene.name + "': body '" + body.name + "': material index " +
+                             std::to_string(body.material) + " out of range");
+        if (body.isStatic()) continue;
+        if (!(body.mass_properties.mass > 0.0) || !(principalFrame(body.mass_properties).principal_inertia.minCoeff() > 0.0))
+            throw InputError("scene '" + scene.name + "': body '" + body.name +
+                             "': a virtual body needs positive mass and positive principal inertia");
+    }
+}
+
+}  // namespace
+
+BulletBackend::BulletBackend(const Scene& scene, const BulletConfig& config)
+    : config_(config),
+      gravity_(scene.gravity),
+      collision_config_(std::make_unique<btDefaultCollisionConfiguration>()),
+      dispatcher_(std::make_unique<btCollisionDispatcher>(collision_config_.get())),
+      broadphase_(std::make_unique<btDbvtBroadphase>()),
+      solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
+      world_(std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                       collision_config_.get())),
+      shapes_(ShapeOptions{config.margin, config.shrink_hulls}),
+      events_(scene.collision_distance) {
+    validate(scene);
+    installMaterialCombineCallbacks();
+    world_->setGravity(toBt(scene.gravity));
+    configureSolver();
+    bodies_.reserve(scene.bodies.size());
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const Body& body = scene.bodies[i];
+        addBody(static_cast<int>(i), body);
+        auto& rigid = *bodies_.back().rigid;
+        rigid.setRestitution(scene.materials.at(static_cast<std::size_t>(body.material)).restitution);
+        rigid.setFriction(scene.materials.at(static_cast<std::size_t>(body.material)).friction);
+    }
+}
+
+BulletBackend::~BulletBackend() {
+    for (auto& b : bodies_) world_->removeRigidBody(b.rigid.get());
+}
+
+void BulletBackend::configureSolver() {
+    btContactSolverInfo& info = world_->getSolverInfo();
+    info.m_numIterations = config_.solver_iterations;
+    info.m_splitImpulse = config_.split_impulse ? 1 : 0;
+    info.m_restitutionVelocityThreshold = config_.restitution_threshold;
+    info.m_warmstartingFactor = config_.warmstarting_factor;
+}
+
+void BulletBackend::addBody(int index, const Body& body) {
+    BodyRecord rec;
+    rec.is_static = body.isStatic();
+    double mass = 0.0;
+    btVector3 inertia(0, 0, 0);
+    if (!rec.is_static) {
+        const PrincipalFrame pf = principalFrame(body.mass_properties);   // validated
+        rec.com_in_body = pf.body_to_com;
+        mass = body.mass_properties.mass;
+        inertia = toBt(pf.principal_inertia);
+    }
+    btCollisionShape* shape = shapes_.map(body.shape, rec.com_in_body);
+    btRigidBody::btRigidBodyConstructionInfo ci(mass, nullptr, shape, inertia);
+    rec.rigid = std::make_unique<btRigidBody>(ci);
+    btRigidBody& rigid = *rec.rigid;
+    rigid.setUserIndex(index);
+    rigid.setWorldTransform(toBt(body.pose * rec.com_in_body));
+    rigid.setInterpolationWorldTransform(rigid.getWorldTransform());
+    if (!rec.is_static) {
+        rigid.setActivationState(DISABLE_DEACTIVATION);   // sleeping off: no frozen bodies
+        rigid.setLinearVelocity(toBt(body.linear_velocity));
+        rigid.setAngularVelocity(toBt(body.angular_velocity));
+        rigid.setInterpolationLinearVelocity(rigid.getLinearVelocity());
+        rigid.setInterpolationAngularVelocity(rigid.getAngularVelocity());
+        if (config_.ccd) {
+            // Swept-sphere CCD when a step moves the COM further than the inner radius.
+            const double r = innerRadius(body.shape);
+            rigid.setCcdMotionThreshold(r);
+            rigid.setCcdSweptSphereRadius(0.5 * r);
+            ++ccd_bodies_;
+        }
+    }
+    world_->addRigidBody(&rigid);
+    if (!rec.is_static) rigid.setGravity(toBt(gravity_));
+    rec.last_good = comState(rigid);
+    bodies_.push_back(std::move(rec));
+}
+
+void BulletBackend::stepFrame(double dt) {
+    if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("bullet: frame dt must be a positive number, got " + std::to_string(dt));
+    const double h = dt / config_.substeps;
+    for (int s = 0; s < config_.substeps; ++s) internalStep(h, time_ + (s + 1) * h);
+    time_ += dt;
+    ++frames_;
+}
+
+void BulletBackend::internalStep(double h, double end_time) {
+    // maxSubSteps = 0: exactly one internal step of h, no interpolation of reported states.
+    world_->stepSimulation(h, 0, h);
+    ++internal_steps_;
+    recoverBadStates();
+    events_.afterStep(*dispatcher_, end_time);
+}
+
+// Two kinds of trouble, each counted and recovered so the run goes on:
+//  - a non-finite state: the body goes back to its last good state;
+//  - Bullet's AABB overflow (coordinates too large for its bounds arithmetic): Bullet silently
+//    stops simulating the body; it goes back to its last good pose, at rest, and is simulated.
+void BulletBackend::recoverBadStates() {
+    for (auto& rec : bodies_) {
+        if (rec.is_static) continue;
+        btRigidBody& rigid = *rec.rigid;
+        if (!finite(rigid.getWorldTransform(), rigid.getLinearVelocity(), rigid.getAngularVelocity())) {
+            ++nonfinite_;
+            setComState(rigid, rec.last_good);
+        } else if (rigid.getActivationState() == DISABLE_SIMULATION) {
+            ++aabb_overflow_;
+            BodyState at_rest = rec.last_good;
+            at_rest.linear_velocity.setZero();
+            at_rest.angular_velocity.setZero();
+            setComState(rigid, at_rest);
+        } else {
+            rec.last_good = comState(rigid);
+        }
+    }
+}
+
+BodyState BulletBackend::comState(const btRigidBody& rigid) const {
+    BodyState s;
+    s.pose = fromBt(rigid.getWorldTransform());
+    s.linear_velocity = fromBt(rigid.getLinearVelocity());
+    s.angular_velocity = fromBt(rigid.getAngularVelocity());
+    return s;
+}
+
+void BulletBackend::setComState(btRigidBody& rigid, const BodyState& com) {
+    rigid.setWorldTransform(toBt(com.pose));
+    rigid.setInterpolationWorldTransform(rigid.getWorldTransform());
+    rigid.setLinearVelocity(toBt(com.linear_velocity));
+    rigid.setAngularVelocity(toBt(com.angular_velocity));
+    rigid.setInterpolationLinearVelocity(rigid.getLinearVelocity());
+    rigid.setInterpolationAngularVelocity(rigid.getAngularVelocity());
+    rigid.updateInertiaTensor();
+    rigid.clearForces();
+    // Bullet disables simulation of a body whose AABB overflowed; sleeping stays off.
+    rigid.forceActivationState(DISABLE_DEACTIVATION);
+}
+
+BodyState BulletBackend::bodyState(int body) const {
+    if (body < 0 || body >= bodyCount()) throw InputError("bullet: no body with index " + std::to_string(body));
+    const BodyRecord& rec = bodies_[static_cast<std::size_t>(body)];
+    BodyState s = comState(*rec.rigid);
+    s.pose = s.pose * rec.com_in_body.inverse();   // report the scene's body frame
+    if (s.pose.orientation.w() < 0.0) s.pose.orientation.coeffs() *= -1.0;   // same rotation, w >= 0
+    return s;
+}
+
+BulletBackend::BodyRecord& BulletBackend::record(int body, const char* what) {
+    if (body < 0 || body >= bodyCount())
+        throw InputError(std::string("bullet: ") + what + ": no body with index " + std::to_string(body));
+    return bodies_[static_cast<std::size_t>(body)];
+}
+
+void BulletBackend::setBodyState(int body, const BodyState& state) {
+    BodyRecord& rec = record(body, "setBodyState");
+    if (rec.is_static) return;
+    if (!state.pose.position.allFinite() || !state.pose.orientation.coeffs().allFinite() ||
+        state.pose.orientation.norm() == 0.0 || !state.linear_velocity.allFinite() ||
+        !state.angular_velocity.allFinite())
+        throw InputError("bullet: setBodyState: body " + std::to_string(body) +
+                         ": expected finite pose, non-zero quaternion and finite velocities");
+    BodyState com = state;
+    com.pose.orientation.normalize();
+    com.pose = com.pose * rec.com_in_body;
+    setComState(*rec.rigid, com);
+}
+
+void BulletBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) {
+    BodyRecord& rec = record(body, "applyImpulse");
+    if (rec.is_static) return;
+    if (!impulse.allFinite() || !world_point.allFinite())
+        throw InputError("bullet: applyImpulse: body " + std::to_string(body) + ": expected a finite impulse and point");
+    btRigidBody& rigid = *rec.rigid;
+    rigid.updateInertiaTensor();   // world inverse inertia for the current orientation
+    rigid.applyImpulse(toBt(impulse), toBt(world_point) - rigid.getWorldTransform().getOrigin());
+    rigid.activate(true);
+}
+
+WarningCounts BulletBackend::warnings() const {
+    return {{"nonfinite_state", nonfinite_}, {"aabb_overflow", aabb_overflow_}};
+}
+
+Statistics BulletBackend::statistics() const {
+    const double steps = static_cast<double>(internal_steps_);
+    return {
+        {"frames", static_cast<double>(frames_)},
+        {"internal_steps", steps},
+        {"ccd_bodies", static_cast<double>(ccd_bodies_)},
+        {"broadphase_pairs", static_cast<double>(broadphase_->getOverlappingPairCache()->getNumOverlappingPairs())},
+        {"manifolds", static_cast<double>(events_.manifoldCount())},
+        {"contact_points", static_cast<double>(events_.contactPointCount())},
+        {"contact_points_mean", steps > 0 ? static_cast<double>(events_.contactPointTotal()) / steps : 0.0},
+        {"pairs_in_contact", static_cast<double>(events_.pairsInContact())},
+        {"collision_events", static_cast<double>(events_.eventTotal())},
+    };
+}
+
+}  // namespace vroc::bullet
