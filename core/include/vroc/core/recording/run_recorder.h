@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// Runs one backend on one scene for a number of frames and records trajectory.csv, events.csv and
+// run.json into a directory (atomic_output.h). `vroc run` and the harness commands share it.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "vroc/core/backend.h"
+#include "vroc/core/scene.h"
+#include "vroc/core/settings.h"
+#include "vroc/core/recording/run_record.h"
+
+namespace vroc::recording {
+
+struct RunRequest {
+    const Scene* scene = nullptr;                ///< not owned; must outlive the call
+    const BackendInfo* backend = nullptr;        ///< not owned
+    Settings settings;                           ///< resolved against backend->settings
+    std::string scene_file;                      ///< for run.json
+    double frame_dt = 0;                         ///< [s] > 0, finite
+    double duration = 0;                         ///< [s] > 0, finite
+    std::filesystem::path out_dir;
+    std::string command_line;                    ///< for run.json
+    /// Called after each frame with (frames done, total); returning false stops the run, which
+    /// then fails with RunError("interrupted ...") and leaves no run.json. May be empty.
+    std::function<bool(std::int64_t, std::int64_t)> progress;
+};
+
+/// Frames needed to cover `duration` with steps of `dt`: duration/dt rounded to the nearest integer
+/// when within 1e-9 relative of it (so 5 s at 1/60 s is 300), else rounded up. At least 1.
+/// Throws InputError unless both are finite and positive and the count is at most 1e9.
+std::int64_t frameCount(double duration, double dt);
+
+/// Validates the request (InputError), prepares the output directory (InputError if unwritable),
+/// creates the backend (its InputError passes through), steps and records. Failures while stepping
+/// or writing throw RunError; in every failure case no run.json is written and temporary files are
+/// removed. Returns the record that was written to run.json.
+RunRecord recordRun(const RunRequest& request);
+
+}  // namespace vroc::recording
