@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 PACKAGES := cmake ninja-build g++ make pkg-config git ca-certificates \
   libeigen3-dev libbullet-dev libccd-dev libassimp-dev libqhull-dev \
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libfmt-dev libspdlog-dev \
-  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg
+  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps configure build demo test test-long bench clean

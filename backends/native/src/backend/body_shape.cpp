@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#include "backend/body_shape.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace vroc::native {
+namespace {
+
+void addPart(const Shape& shape, const Pose& local, std::vector<ConvexPart>& parts) {
+    ConvexPart p;
+    p.local = local;
+    switch (shape.kind) {
+        case Shape::Kind::Sphere:
+            p.is_sphere = true;
+            p.radius = shape.radius;
+            break;
+        case Shape::Kind::Box:
+            p.mesh = std::make_shared<const ConvexMesh>(ConvexMesh::box(shape.half_extents));
+            break;
+        case Shape::Kind::Hull:
+            p.mesh = std::make_shared<const ConvexMesh>(ConvexMesh::fromPolyhedron(*shape.hull));
+            break;
+        case Shape::Kind::Compound:
+            for (const ShapePart& sub : shape.parts) addPart(sub.shape, local * sub.pose, parts);
+            return;
+    }
+    parts.push_back(std::move(p));
+}
+
+}  // namespace
+
+BodyShape BodyShape::fromScene(const Shape& shape, const Vec3& com) {
+    BodyShape s;
+    addPart(shape, Pose::identity(), s.parts);
+    for (const ConvexPart& p : s.parts) {
+        if (p.is_sphere) {
+            s.outer_radius = std::max(s.outer_radius, (p.local.position - com).norm() + p.radius);
+        } else {
+            for (int v = 0; v < p.mesh->vertexCount(); ++v)
+                s.outer_radius = std::max(s.outer_radius, (p.local.apply(p.mesh->position(v)) - com).norm());
+        }
+    }
+    if (s.parts.size() == 1) {
+        const ConvexPart& p = s.parts.front();
+        const Vec3 c = p.local.applyInverse(com);   // COM in the part frame
+        if (p.is_sphere) {
+            s.inner_radius = std::max(0.0, p.radius - c.norm());
+        } else {
+            double r = std::numeric_limits<double>::infinity();
+            for (int f = 0; f < p.mesh->faceCount(); ++f) r = std::min(r, -p.mesh->faceDistance(f, c));
+            s.inner_radius = std::max(0.0, r);
+        }
+    }
+    s.inner_radius = std::min(s.inner_radius, s.outer_radius);
+    return s;
+}
+
+Aabb BodyShape::worldAabb(const Pose& frame) const {
+    const double inf = std::numeric_limits<double>::infinity();
+    Aabb box{Vec3::Constant(inf), Vec3::Constant(-inf)};
+    for (const ConvexPart& p : parts) {
+        const Pose world = frame * p.local;
+        if (p.is_sphere) {
+            box.lower = box.lower.cwiseMin(world.position - Vec3::Constant(p.radius));
+            box.upper = box.upper.cwiseMax(world.position + Vec3::Constant(p.radius));
+            continue;
+        }
+        for (int v = 0; v < p.mesh->vertexCount(); ++v) {
+            const Vec3 x = world.apply(p.mesh->position(v));
+            box.lower = box.lower.cwiseMin(x);
+            box.upper = box.upper.cwiseMax(x);
+        }
+    }
+    return box;
+}
+
+}  // namespace vroc::native

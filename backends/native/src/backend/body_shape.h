@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// A body's collision geometry for the native backend: convex parts (exact spheres or half-edge
+// meshes) placed in the scene body frame, plus the radii the motion bounds need.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "geometry/convex_mesh.h"
+#include "scheduling/aabb.h"
+#include "vroc/core/scene.h"
+
+namespace vroc::native {
+
+struct ConvexPart {
+    bool is_sphere = false;
+    double radius = 0.0;                          ///< [m] sphere radius
+    std::shared_ptr<const ConvexMesh> mesh;       ///< polyhedra: shared, immutable
+    Pose local;                                   ///< part frame -> scene body frame
+};
+
+struct BodyShape {
+    std::vector<ConvexPart> parts;
+    double outer_radius = 0.0;   ///< [m] R: farthest surface point from the COM
+    double inner_radius = 0.0;   ///< [m] r: largest COM-centred ball inside (0 if unknown)
+
+    /// Builds the parts; `com` [m] is the COM in the body frame.
+    static BodyShape fromScene(const Shape& shape, const Vec3& com);
+    /// Exact world box of the shape at `frame` (body frame -> world).
+    Aabb worldAabb(const Pose& frame) const;
+};
+
+}  // namespace vroc::native

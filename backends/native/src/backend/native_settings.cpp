@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+#include "backend/native_settings.h"
+
+namespace vroc::native {
+
+std::vector<SettingSpec> NativeSettings::specs() {
+    using T = SettingSpec::Type;
+    std::vector<SettingSpec> s;
+    s.push_back({"native.response", T::Choice, "newton-coulomb", 0, 0, {"newton-coulomb", "vroc1995"},
+                 "response model: Newton restitution + Coulomb friction with resting contact, or the "
+                 "1995 paper's single-point momentum impulse (docs/response-models.md)"});
+    s.push_back({"native.threads", T::Integer, "1", 1, 64, {},
+                 "workers for the pair queries; results are bit-identical for any count"});
+    s.push_back({"native.max_internal_steps", T::Integer, "20000", 1, 1e7, {},
+                 "internal steps per frame before the rest of the frame is taken at once (counted)"});
+    s.push_back({"native.restitution_threshold", T::Real, "0", 0, 1e3, {},
+                 "[m/s] normal approach speed below which a collision is plastic (e = 0)"});
+    s.push_back({"native.collision_iterations", T::Integer, "5", 1, 1000, {},
+                 "collision-phase sweeps over the touching pairs"});
+    s.push_back({"native.contact_iterations", T::Integer, "20", 1, 10000, {},
+                 "contact-phase Gauss-Seidel sweeps over the contact points"});
+    s.push_back({"native.shock_iterations", T::Integer, "8", 0, 1000, {},
+                 "shock-propagation sweeps per stack level (0 turns it off)"});
+    return s;
+}
+
+NativeSettings NativeSettings::from(const Settings& settings) {
+    NativeSettings n;
+    const auto& v = settings.values();
+    auto has = [&](const char* key) { return v.count(key) != 0; };
+    if (has("native.response"))
+        n.response = settings.text("native.response") == "vroc1995" ? ResponseModel::Vroc1995
+                                                                    : ResponseModel::NewtonCoulomb;
+    if (has("native.threads")) n.threads = static_cast<int>(settings.integer("native.threads"));
+    if (has("native.max_internal_steps"))
+        n.max_internal_steps = static_cast<int>(settings.integer("native.max_internal_steps"));
+    if (has("native.restitution_threshold"))
+        n.restitution_threshold = settings.real("native.restitution_threshold");
+    if (has("native.collision_iterations"))
+        n.collision_iterations = static_cast<int>(settings.integer("native.collision_iterations"));
+    if (has("native.contact_iterations"))
+        n.contact_iterations = static_cast<int>(settings.integer("native.contact_iterations"));
+    if (has("native.shock_iterations"))
+        n.shock_iterations = static_cast<int>(settings.integer("native.shock_iterations"));
+    return n;
+}
+
+}  // namespace vroc::native

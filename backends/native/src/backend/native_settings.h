@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// The native backend's settings (`--set native.<name>=value`), declared with type, range and help.
+#pragma once
+
+#include <vector>
+
+#include "dynamics/contact_solver.h"
+#include "vroc/core/settings.h"
+
+namespace vroc::native {
+
+struct NativeSettings {
+    ResponseModel response = ResponseModel::NewtonCoulomb;
+    int threads = 1;                        ///< workers for the narrow phase (results identical for any)
+    int max_internal_steps = 20000;         ///< per frame; beyond it the rest of the frame is one step
+    double restitution_threshold = 0.0;     ///< [m/s] approach speeds below it collide with e = 0
+    int collision_iterations = 5;           ///< collision-phase sweeps over touching pairs
+    int contact_iterations = 20;            ///< contact-phase Gauss-Seidel sweeps
+    int shock_iterations = 8;               ///< shock-propagation sweeps per level (0 = off)
+
+    static std::vector<SettingSpec> specs();
+    static NativeSettings from(const Settings& settings);
+};
+
+}  // namespace vroc::native

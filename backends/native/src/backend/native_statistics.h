@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// Counters of the native backend, reported through Backend::statistics() into run.json.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "vroc/core/backend.h"
+
+namespace vroc::native {
+
+struct NativeStatistics {
+    std::int64_t frames = 0;
+    std::int64_t internal_steps = 0;
+    std::int64_t max_internal_steps_per_frame = 0;
+    std::int64_t broad_phase_pairs = 0;      ///< summed over internal steps
+    std::int64_t narrow_queries = 0;         ///< part-pair proximity queries
+    std::int64_t walk_steps = 0;             ///< summed over queries
+    std::int64_t max_walk_steps = 0;
+    std::int64_t toi_limited_steps = 0;      ///< internal steps cut short by a pair's contact bound
+    std::int64_t step_solves = 0;            ///< contact-phase solves (>= 1 per internal step with contacts)
+    std::int64_t queue_pops = 0;             ///< pairs taken from the collision queue for a query
+    std::int64_t queue_skips = 0;            ///< broad-phase pairs left untouched (their time had not come)
+    std::int64_t collisions = 0;             ///< collision events
+    std::int64_t contacts = 0;               ///< touching part pairs, summed over internal steps
+    std::int64_t contact_points = 0;         ///< contact-phase points, summed over internal steps
+
+    Statistics report() const {
+        Statistics s;
+        const double steps = static_cast<double>(std::max<std::int64_t>(1, internal_steps));
+        const double queries = static_cast<double>(std::max<std::int64_t>(1, narrow_queries));
+        s["frames"] = static_cast<double>(frames);
+        s["internal_steps"] = static_cast<double>(internal_steps);
+        s["internal_steps_per_frame_mean"] =
+            static_cast<double>(internal_steps) / static_cast<double>(std::max<std::int64_t>(1, frames));
+        s["internal_steps_per_frame_max"] = static_cast<double>(max_internal_steps_per_frame);
+        s["broad_phase_pairs_mean"] = static_cast<double>(broad_phase_pairs) / steps;
+        s["narrow_queries"] = static_cast<double>(narrow_queries);
+        s["walk_steps_mean"] = static_cast<double>(walk_steps) / queries;
+        s["walk_steps_max"] = static_cast<double>(max_walk_steps);
+        s["toi_iterations"] = static_cast<double>(toi_limited_steps);
+        s["contact_solves"] = static_cast<double>(step_solves);
+        s["queue_pops"] = static_cast<double>(queue_pops);
+        s["queue_skips"] = static_cast<double>(queue_skips);
+        s["collisions"] = static_cast<double>(collisions);
+        s["contacts"] = static_cast<double>(contacts);
+        s["contact_points"] = static_cast<double>(contact_points);
+        return s;
+    }
+};
+
+}  // namespace vroc::native

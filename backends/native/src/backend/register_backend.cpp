@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+#include "backend/native_backend.h"
+#include "vroc/core/backend_registry.h"
+#include "vroc/native/native_backend.h"
+
+namespace vroc::native {
+namespace {
+
+std::unique_ptr<Backend> create(const Scene& scene, const Settings& settings) {
+    return std::make_unique<NativeBackend>(scene, NativeSettings::from(settings));
+}
+
+}  // namespace
+
+void registerBackend() {
+    BackendInfo info;
+    info.name = "native";
+    info.description = "Lin-Canny/V-Clip closest features, impulse response, exact time of contact";
+    info.version = "native 0.1 (V-Clip walk, Guendelman contact, exact flight)";
+    info.settings = NativeSettings::specs();
+    info.create = &create;
+    BackendRegistry::global().add(std::move(info));
+}
+
+}  // namespace vroc::native

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// One touching pair of convex parts, as the response models see it.
+#pragma once
+
+#include <vector>
+
+#include "vroc/core/math.h"
+
+namespace vroc::native {
+
+struct ContactManifold {
+    int body_a = -1;                  ///< index into the backend's bodies (a < b)
+    int body_b = -1;
+    int pair = -1;                    ///< index of the body pair (events aggregate by it)
+    Vec3 normal = Vec3::UnitZ();      ///< unit, from A towards B, world
+    double distance = 0.0;            ///< [m] signed gap of the closest features
+    Vec3 centroid = Vec3::Zero();     ///< [m] single-point models: the patch centroid, world
+    std::vector<Vec3> points;         ///< [m] manifold: the patch polygon (>= 1 point), world
+    double restitution = 0.0;         ///< [-] combined (minimum)
+    double friction = 0.0;            ///< [-] combined (geometric mean)
+    double collision_impulse = 0.0;   ///< [N s] normal impulse of the collision phase (output)
+    double contact_impulse = 0.0;     ///< [N s] normal impulse of the contact phase (output)
+};
+
+}  // namespace vroc::native

@@ -1,0 +1,328 @@
+// SPDX-License-Identifier: MIT
+#include "dynamics/contact_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+
+namespace vroc::native {
+namespace {
+
+constexpr int kUnreached = 1 << 30;
+
+// Working velocity of one body during the solve; inverse mass properties frozen for the step.
+struct WorkBody {
+    Vec3 v = Vec3::Zero();
+    Vec3 w = Vec3::Zero();
+    double inv_mass = 0.0;
+    Mat3 inv_inertia = Mat3::Zero();
+    Vec3 com = Vec3::Zero();
+    int level = 0;          // shock propagation: graph distance from the static bodies
+};
+
+struct PointConstraint {
+    int a = -1, b = -1;
+    int manifold = -1;
+    Vec3 ra, rb;            // contact point - COM, world
+    Vec3 n, t1, t2;         // normal A->B and tangent basis
+    double target = 0.0;    // [m/s] lower bound on the final normal relative velocity
+    double mu = 0.0;
+    double lambda_n = 0.0;  // accumulated impulses (normal; tangential for a patch's friction)
+    Eigen::Vector2d lambda_t = Eigen::Vector2d::Zero();
+};
+
+Vec3 relativeVelocity(const std::vector<WorkBody>& wb, const PointConstraint& c) {
+    const WorkBody& a = wb[c.a];
+    const WorkBody& b = wb[c.b];
+    return (b.v + b.w.cross(c.rb)) - (a.v + a.w.cross(c.ra));
+}
+
+void applyPair(std::vector<WorkBody>& wb, const PointConstraint& c, const Vec3& j, bool freeze_a,
+               bool freeze_b) {
+    WorkBody& a = wb[c.a];
+    WorkBody& b = wb[c.b];
+    if (!freeze_a) {
+        a.v -= a.inv_mass * j;
+        a.w -= a.inv_inertia * c.ra.cross(j);
+    }
+    if (!freeze_b) {
+        b.v += b.inv_mass * j;
+        b.w += b.inv_inertia * c.rb.cross(j);
+    }
+}
+
+Mat3 pointMatrix(const WorkBody& a, const WorkBody& b, const PointConstraint& c, bool freeze_a,
+                 bool freeze_b) {
+    Mat3 k = Mat3::Zero();
+    if (!freeze_a) {
+        const Mat3 s = skew(c.ra);
+        k += a.inv_mass * Mat3::Identity() - s * a.inv_inertia * s;
+    }
+    if (!freeze_b) {
+        const Mat3 s = skew(c.rb);
+        k += b.inv_mass * Mat3::Identity() - s * b.inv_inertia * s;
+    }
+    return k;
+}
+
+// One projected Gauss-Seidel update of a point's normal impulse (accumulated, clamped >= 0).
+void relaxNormal(std::vector<WorkBody>& wb, PointConstraint& c, bool freeze_a, bool freeze_b) {
+    const Mat3 k = pointMatrix(wb[c.a], wb[c.b], c, freeze_a, freeze_b);
+    const double kn = c.n.dot(k * c.n);
+    if (!(kn > 0.0)) return;
+    const double un = relativeVelocity(wb, c).dot(c.n);
+    const double new_n = std::max(0.0, c.lambda_n + (c.target - un) / kn);
+    applyPair(wb, c, (new_n - c.lambda_n) * c.n, freeze_a, freeze_b);
+    c.lambda_n = new_n;
+}
+
+// Coulomb friction of a whole patch, applied at its centroid inside the circular cone of radius
+// mu * (sum of the patch's normal impulses). One tangential impulse per patch, not per point: the
+// normal split over the polygon is statically indeterminate, and per-point friction would turn an
+// uneven split into a spurious yaw torque (a sliding box would turn off its heading).
+void relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const std::vector<PointConstraint>& cs,
+                   int first, int count, bool freeze_a, bool freeze_b) {
+    if (f.mu <= 0.0) return;
+    double normal_sum = 0.0;
+    for (int i = first; i < first + count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
+    const Mat3 k = pointMatrix(wb[f.a], wb[f.b], f, freeze_a, freeze_b);
+    const Vec3 u = relativeVelocity(wb, f);
+    const Eigen::Vector2d ut(u.dot(f.t1), u.dot(f.t2));
+    Eigen::Matrix2d kt;
+    kt << f.t1.dot(k * f.t1), f.t1.dot(k * f.t2), f.t2.dot(k * f.t1), f.t2.dot(k * f.t2);
+    if (!(kt.determinant() > 0.0)) return;
+    Eigen::Vector2d cand = f.lambda_t - kt.inverse() * ut;
+    const double limit = f.mu * normal_sum;
+    const double len = cand.norm();
+    if (len > limit) cand *= (len > 0.0 ? limit / len : 0.0);
+    const Eigen::Vector2d d = cand - f.lambda_t;
+    applyPair(wb, f, d(0) * f.t1 + d(1) * f.t2, freeze_a, freeze_b);
+    f.lambda_t = cand;
+}
+
+// Single-point plastic, sticking impulse at the centroid (the 1995 model's contact phase).
+void relaxPlastic(std::vector<WorkBody>& wb, PointConstraint& c, int& ill) {
+    const Vec3 u = relativeVelocity(wb, c);
+    const double un = u.dot(c.n);
+    if (!(un < c.target)) return;
+    const Vec3 du = (c.target - un) * c.n - (u - un * c.n);
+    Eigen::FullPivLU<Mat3> lu(pointMatrix(wb[c.a], wb[c.b], c, false, false));
+    if (lu.rcond() <= 1e-12) {
+        ++ill;
+        return;
+    }
+    const Vec3 j = lu.solve(du);
+    applyPair(wb, c, j, false, false);
+    c.lambda_n += std::max(0.0, j.dot(c.n));
+}
+
+void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies,
+                  const std::vector<PointConstraint>& cs) {
+    std::vector<std::vector<int>> adj(wb.size());
+    for (const auto& c : cs) {
+        adj[c.a].push_back(c.b);
+        adj[c.b].push_back(c.a);
+    }
+    std::deque<int> queue;
+    for (std::size_t i = 0; i < wb.size(); ++i) {
+        wb[i].level = bodies[i].is_static ? 0 : kUnreached;
+        if (bodies[i].is_static) queue.push_back(static_cast<int>(i));
+    }
+    while (!queue.empty()) {
+        const int i = queue.front();
+        queue.pop_front();
+        for (int j : adj[i]) {
+            if (wb[j].level == kUnreached) {
+                wb[j].level = wb[i].level + 1;
+                queue.push_back(j);
+            }
+        }
+    }
+}
+
+// A patch: its normal points cs[first, first + count) and its friction constraint at the centroid.
+struct Patch {
+    PointConstraint friction;
+    int first = 0, count = 0;
+    double torsion_radius = 0.0;   // [m] (2/3) mean distance of the polygon from its centroid
+    double lambda_torsion = 0.0;   // [N m s] accumulated torsional impulse about the normal
+};
+
+// Torsional (spin) friction of a polygon patch: a uniform pressure over a disc of radius a gives
+// a maximal friction torque (2/3) a mu N. Without it a box stopped on a table keeps a tiny spin.
+void relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint>& cs, Patch& p,
+                  bool freeze_a, bool freeze_b) {
+    const PointConstraint& f = p.friction;
+    if (f.mu <= 0.0 || p.torsion_radius <= 0.0) return;
+    WorkBody& a = wb[f.a];
+    WorkBody& b = wb[f.b];
+    const double k = (freeze_a ? 0.0 : f.n.dot(a.inv_inertia * f.n)) + (freeze_b ? 0.0 : f.n.dot(b.inv_inertia * f.n));
+    if (!(k > 0.0)) return;
+    double normal_sum = 0.0;
+    for (int i = p.first; i < p.first + p.count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
+    const double spin = (b.w - a.w).dot(f.n);
+    const double limit = f.mu * normal_sum * p.torsion_radius;
+    const double next = std::clamp(p.lambda_torsion - spin / k, -limit, limit);
+    const double d = next - p.lambda_torsion;
+    p.lambda_torsion = next;
+    if (!freeze_a) a.w -= a.inv_inertia * (d * f.n);
+    if (!freeze_b) b.w += b.inv_inertia * (d * f.n);
+}
+
+// All normal impulses of a patch at once: the minimum-norm increment that brings every point to
+// its target (a rigid pair has only 3 normal-relevant degrees of freedom, so for 4+ coplanar points
+// the system is singular and the pseudo-inverse picks the symmetric split). Point-by-point
+// Gauss-Seidel leaves an uneven split that rocks a resting box. Returns false (nothing applied) if
+// some accumulated impulse would turn negative: the caller then relaxes point by point.
+bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, const Patch& p,
+                      bool freeze_a, bool freeze_b) {
+    const int n = p.count;
+    if (n < 2 || n > 16) return false;
+    const WorkBody& a = wb[p.friction.a];
+    const WorkBody& b = wb[p.friction.b];
+    Eigen::MatrixXd m(n, n);
+    Eigen::VectorXd rhs(n);
+    for (int i = 0; i < n; ++i) {
+        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
+        rhs(i) = ci.target - relativeVelocity(wb, ci).dot(ci.n);
+        for (int j = 0; j < n; ++j) {
+            const PointConstraint& cj = cs[static_cast<std::size_t>(p.first + j)];
+            Vec3 du = Vec3::Zero();   // relative velocity change at i per unit normal impulse at j
+            if (!freeze_a) du += a.inv_mass * cj.n + (a.inv_inertia * cj.ra.cross(cj.n)).cross(ci.ra);
+            if (!freeze_b) du += b.inv_mass * cj.n + (b.inv_inertia * cj.rb.cross(cj.n)).cross(ci.rb);
+            m(i, j) = ci.n.dot(du);
+        }
+    }
+    const Eigen::VectorXd x = m.completeOrthogonalDecomposition().solve(rhs);
+    if (!x.allFinite()) return false;
+    for (int i = 0; i < n; ++i)
+        if (cs[static_cast<std::size_t>(p.first + i)].lambda_n + x(i) < 0.0) return false;
+    for (int i = 0; i < n; ++i) {
+        PointConstraint& c = cs[static_cast<std::size_t>(p.first + i)];
+        applyPair(wb, c, x(i) * c.n, freeze_a, freeze_b);
+        c.lambda_n += x(i);
+    }
+    return true;
+}
+
+void relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p, bool freeze_a,
+                bool freeze_b) {
+    if (!relaxNormalBlock(wb, cs, p, freeze_a, freeze_b)) {
+        for (int i = p.first; i < p.first + p.count; ++i)
+            relaxNormal(wb, cs[static_cast<std::size_t>(i)], freeze_a, freeze_b);
+    }
+    relaxFriction(wb, p.friction, cs, p.first, p.count, freeze_a, freeze_b);
+    relaxTorsion(wb, cs, p, freeze_a, freeze_b);
+}
+
+void shockPropagation(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs,
+                      std::vector<Patch>& patches, int sweeps) {
+    // Bodies not connected to a static one keep level kUnreached: the Gauss-Seidel result stands.
+    int max_level = 0;
+    for (const auto& c : cs) {
+        for (int l : {wb[c.a].level, wb[c.b].level})
+            if (l < kUnreached) max_level = std::max(max_level, l);
+    }
+    for (int level = 1; level <= max_level; ++level) {
+        for (int s = 0; s < sweeps; ++s) {
+            for (auto& p : patches) {
+                const int la = wb[p.friction.a].level, lb = wb[p.friction.b].level;
+                if (std::max(la, lb) != level) continue;
+                relaxPatch(wb, cs, p, la < level, lb < level);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
+                                      std::vector<ContactManifold>& manifolds, double h,
+                                      const Vec3& gravity, const ContactSolverSettings& settings,
+                                      std::vector<BodyImpulse>& impulses) {
+    ContactSolverReport report;
+    std::vector<WorkBody> wb(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const RigidBody& rb = bodies[i];
+        wb[i].com = rb.com;
+        if (rb.is_static) continue;
+        wb[i].inv_mass = rb.inv_mass;
+        wb[i].inv_inertia = rb.invInertiaWorld();
+        wb[i].w = wb[i].inv_inertia * rb.angular_momentum;
+        wb[i].v = rb.velocity;
+    }
+    // Targets come from the velocities at the step start: a separating point may slow down to
+    // minus its start speed (the average stays >= 0); an approaching or resting one must not approach.
+    std::vector<PointConstraint> cs;
+    std::vector<Patch> patches;
+    const bool single_point = settings.model == ResponseModel::Vroc1995;
+    auto constraintAt = [&](const ContactManifold& mf, int m, const Vec3& p) {
+        PointConstraint c;
+        c.a = mf.body_a;
+        c.b = mf.body_b;
+        c.manifold = m;
+        c.ra = p - wb[c.a].com;
+        c.rb = p - wb[c.b].com;
+        c.n = mf.normal;
+        c.t1 = c.n.unitOrthogonal();
+        c.t2 = c.n.cross(c.t1);
+        c.mu = mf.friction;
+        c.target = -std::max(0.0, relativeVelocity(wb, c).dot(c.n));
+        return c;
+    };
+    for (std::size_t m = 0; m < manifolds.size(); ++m) {
+        const ContactManifold& mf = manifolds[m];
+        std::vector<Vec3> pts = single_point ? std::vector<Vec3>{mf.centroid} : mf.points;
+        if (pts.empty()) pts.push_back(mf.centroid);
+        Patch patch;
+        patch.first = static_cast<int>(cs.size());
+        patch.count = static_cast<int>(pts.size());
+        patch.friction = constraintAt(mf, static_cast<int>(m), mf.centroid);
+        if (pts.size() > 2) {
+            double mean = 0.0;
+            for (const Vec3& p : pts) mean += (p - mf.centroid).norm();
+            patch.torsion_radius = (2.0 / 3.0) * mean / static_cast<double>(pts.size());
+        }
+        patches.push_back(patch);
+        for (const Vec3& p : pts) cs.push_back(constraintAt(mf, static_cast<int>(m), p));
+    }
+    report.points = static_cast<int>(cs.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        if (!bodies[i].is_static) wb[i].v += gravity * h;
+    }
+    const std::vector<WorkBody> predicted = wb;
+    if (single_point) {
+        for (int it = 0; it < settings.iterations; ++it) {
+            for (auto& c : cs) relaxPlastic(wb, c, report.ill_conditioned);
+        }
+    } else {
+        for (int it = 0; it < settings.iterations; ++it) {
+            for (auto& p : patches) relaxPatch(wb, cs, p, false, false);
+        }
+        if (settings.shock_iterations > 0) {
+            assignLevels(wb, bodies, cs);
+            shockPropagation(wb, cs, patches, settings.shock_iterations);
+        }
+    }
+    // Impulses per body, recovered from the velocity change (covers every pass above).
+    impulses.assign(bodies.size(), BodyImpulse{});
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const RigidBody& rb = bodies[i];
+        if (rb.is_static) continue;
+        const Vec3 dv = wb[i].v - predicted[i].v;
+        const Vec3 dw = wb[i].w - predicted[i].w;
+        if (dv.isZero(0.0) && dw.isZero(0.0)) continue;
+        impulses[i].linear = dv / rb.inv_mass;
+        const Mat3 r = rb.rotation();
+        impulses[i].angular = r * rb.inertia_body * r.transpose() * dw;
+        impulses[i].supported = true;
+    }
+    for (auto& mf : manifolds) mf.contact_impulse = 0.0;
+    for (const auto& c : cs) manifolds[c.manifold].contact_impulse += c.lambda_n;
+    return report;
+}
+
+}  // namespace vroc::native

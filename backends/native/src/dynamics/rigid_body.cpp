@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#include "dynamics/rigid_body.h"
+
+#include <Eigen/Eigenvalues>
+
+namespace vroc::native {
+
+Mat3 RigidBody::invInertiaWorld() const {
+    if (is_static) return Mat3::Zero();
+    const Mat3 r = rotation();
+    return r * inv_inertia_body * r.transpose();
+}
+
+Vec3 RigidBody::angularVelocity() const {
+    if (is_static) return Vec3::Zero();
+    // Body-frame form keeps the product cheap and symmetric: omega = R I^-1 R^T L.
+    return orientation * (inv_inertia_body * (orientation.conjugate() * angular_momentum));
+}
+
+Pose RigidBody::framePose() const {
+    Pose p;
+    p.orientation = orientation;
+    p.position = com - orientation * com_offset;
+    return p;
+}
+
+void RigidBody::applyImpulse(const Vec3& impulse, const Vec3& p) {
+    if (is_static) return;
+    velocity += inv_mass * impulse;
+    angular_momentum += (p - com).cross(impulse);
+    refreshEnergy();
+}
+
+void RigidBody::refreshEnergy() {
+    rotational_energy = is_static ? 0.0 : 0.5 * angular_momentum.dot(angularVelocity());
+}
+
+double RigidBody::maxAngularSpeed() const {
+    if (is_static || smallest_moment <= 0.0) return 0.0;
+    return angular_momentum.norm() / smallest_moment;
+}
+
+RigidBody RigidBody::fromScene(const Body& body) {
+    RigidBody rb;
+    rb.is_static = body.isStatic();
+    rb.com_offset = body.isStatic() ? Vec3::Zero() : body.mass_properties.center_of_mass;
+    rb.orientation = body.pose.orientation.normalized();
+    rb.com = body.pose.position + rb.orientation * rb.com_offset;
+    if (!rb.is_static) {
+        rb.inv_mass = 1.0 / body.mass_properties.mass;
+        rb.inertia_body = 0.5 * (body.mass_properties.inertia + body.mass_properties.inertia.transpose());
+        rb.inv_inertia_body = rb.inertia_body.inverse();
+        Eigen::SelfAdjointEigenSolver<Mat3> eig(rb.inertia_body, Eigen::EigenvaluesOnly);
+        rb.smallest_moment = eig.eigenvalues()(0);
+        rb.velocity = body.linear_velocity;
+        const Mat3 r = rb.rotation();
+        rb.angular_momentum = r * rb.inertia_body * r.transpose() * body.angular_velocity;
+    }
+    rb.refreshEnergy();
+    return rb;
+}
+
+void RigidBody::setFromState(const Pose& pose, const Vec3& linear_velocity, const Vec3& angular_velocity) {
+    if (is_static) return;
+    orientation = pose.orientation.normalized();
+    com = pose.position + orientation * com_offset;
+    velocity = linear_velocity;
+    const Mat3 r = rotation();
+    angular_momentum = r * inertia_body * r.transpose() * angular_velocity;
+    refreshEnergy();
+}
+
+}  // namespace vroc::native

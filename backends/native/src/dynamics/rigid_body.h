@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// A rigid body as the native dynamics sees it: state at the centre of mass (COM), world angular
+// momentum stored (not angular velocity) so torque-free flight conserves it exactly.
+#pragma once
+
+#include "vroc/core/math.h"
+#include "vroc/core/scene.h"
+
+namespace vroc::native {
+
+struct RigidBody {
+    bool is_static = true;              ///< real bodies: infinite mass, never move
+    double inv_mass = 0.0;              ///< [1/kg] 0 for static bodies
+    Mat3 inertia_body = Mat3::Zero();   ///< [kg m^2] about the COM, body-frame axes
+    Mat3 inv_inertia_body = Mat3::Zero();   ///< [1/(kg m^2)] 0 for static bodies
+    Vec3 com_offset = Vec3::Zero();     ///< [m] COM in the scene body frame
+
+    Vec3 com = Vec3::Zero();            ///< [m] COM position, world
+    Quat orientation = Quat::Identity();   ///< scene body frame -> world (the frame is not moved to the COM)
+    Vec3 velocity = Vec3::Zero();       ///< [m/s] COM velocity, world
+    Vec3 angular_momentum = Vec3::Zero();  ///< [kg m^2/s] about the COM, world
+    double rotational_energy = 0.0;     ///< [J] reference kinetic energy of rotation (set on every impulse)
+
+    /// World rotation matrix of the body frame.
+    Mat3 rotation() const { return orientation.toRotationMatrix(); }
+    /// [1/(kg m^2)] inverse inertia in world axes (zero for static bodies).
+    Mat3 invInertiaWorld() const;
+    /// [rad/s] world angular velocity, I_world^-1 L.
+    Vec3 angularVelocity() const;
+    /// [m/s] world velocity of the material point at world position `p`.
+    Vec3 pointVelocity(const Vec3& p) const { return velocity + angularVelocity().cross(p - com); }
+    /// Scene body frame -> world.
+    Pose framePose() const;
+
+    /// Applies an impulse [N s] at world point `p` (no effect on static bodies).
+    void applyImpulse(const Vec3& impulse, const Vec3& p);
+    /// Re-derives the rotational energy reference after L or the orientation was set from outside.
+    void refreshEnergy();
+    /// [rad/s] bound on |omega| over torque-free flight: |L| / smallest principal moment.
+    double maxAngularSpeed() const;
+    double smallest_moment = 0.0;       ///< [kg m^2] smallest principal moment (cached at creation)
+
+    static RigidBody fromScene(const Body& body);
+    void setFromState(const Pose& pose, const Vec3& linear_velocity, const Vec3& angular_velocity);
+};
+
+}  // namespace vroc::native

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+#include "scheduling/sweep_and_prune.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vroc::native {
+
+namespace {
+
+BodyPair ordered(int x, int y) { return x < y ? BodyPair{x, y} : BodyPair{y, x}; }
+
+void sortUnique(std::vector<BodyPair>& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+}  // namespace
+
+int SweepAndPrune::addBody(const Aabb& box, bool is_static) {
+    const int body = static_cast<int>(boxes_.size());
+    boxes_.push_back(box);
+    is_static_.push_back(is_static ? 1 : 0);
+    removed_.push_back(0);
+    setAabb(body, box);
+    // Appended after every other end point, lower before upper: as if the box came from +inf.
+    for (auto& axis : axes_) {
+        axis.push_back({std::numeric_limits<double>::infinity(), body, 0});
+        axis.push_back({std::numeric_limits<double>::infinity(), body, 1});
+    }
+    ++pending_new_;
+    return body;
+}
+
+void SweepAndPrune::removeBody(int body) {
+    if (body < 0 || body >= bodyCount() || removed_[body]) return;
+    removed_[body] = 1;
+    for (auto& axis : axes_) {
+        axis.erase(std::remove_if(axis.begin(), axis.end(),
+                                  [body](const EndPoint& e) { return e.body == body; }),
+                   axis.end());
+    }
+    const auto before_size = pairs_.size();
+    pairs_.erase(std::remove_if(pairs_.begin(), pairs_.end(),
+                                [body](const BodyPair& p) { return p.a == body || p.b == body; }),
+                 pairs_.end());
+    stats_.pairs_removed += static_cast<std::int64_t>(before_size - pairs_.size());
+}
+
+void SweepAndPrune::setAabb(int body, const Aabb& box) {
+    Aabb clean = box;
+    bool bad = false;
+    for (int axis = 0; axis < 3; ++axis) {
+        double& lo = clean.lower[axis];
+        double& hi = clean.upper[axis];
+        if (std::isnan(lo)) { lo = -std::numeric_limits<double>::infinity(); bad = true; }
+        if (std::isnan(hi)) { hi = std::numeric_limits<double>::infinity(); bad = true; }
+        if (lo > hi) { std::swap(lo, hi); bad = true; }   // inverted: keep the sort consistent
+    }
+    if (bad) ++stats_.invalid_boxes;
+    boxes_[body] = clean;
+}
+
+bool SweepAndPrune::pairAllowed(int x, int y) const {
+    return x != y && !(is_static_[x] && is_static_[y]) && !removed_[x] && !removed_[y];
+}
+
+void SweepAndPrune::writeValues() {
+    for (int axis = 0; axis < 3; ++axis) {
+        for (EndPoint& e : axes_[axis]) {
+            const Aabb& box = boxes_[e.body];
+            e.value = e.is_upper ? box.upper[axis] : box.lower[axis];
+        }
+    }
+}
+
+void SweepAndPrune::onBegin(int body_x, int body_y) {
+    if (pairAllowed(body_x, body_y) && boxes_[body_x].overlaps(boxes_[body_y])) {
+        added_.push_back(ordered(body_x, body_y));
+    }
+}
+
+void SweepAndPrune::onEnd(int body_x, int body_y) {
+    if (pairAllowed(body_x, body_y)) dropped_.push_back(ordered(body_x, body_y));
+}
+
+void SweepAndPrune::sortAxis(int axis) {
+    std::vector<EndPoint>& e = axes_[axis];
+    for (std::size_t i = 1; i < e.size(); ++i) {
+        if (!before(e[i], e[i - 1])) continue;   // the common coherent case: already in place
+        const EndPoint key = e[i];
+        std::size_t j = i;
+        for (; j > 0 && before(key, e[j - 1]); --j) {
+            const EndPoint& passed = e[j - 1];
+            // key moves below `passed`: lower past upper starts an axis overlap, upper past
+            // lower ends one; like ends passing each other change nothing.
+            if (!key.is_upper && passed.is_upper) onBegin(key.body, passed.body);
+            if (key.is_upper && !passed.is_upper) onEnd(key.body, passed.body);
+            e[j] = e[j - 1];
+            ++stats_.swaps;
+        }
+        e[j] = key;
+    }
+}
+
+void SweepAndPrune::applyChanges() {
+    if (added_.empty() && dropped_.empty()) return;
+    sortUnique(added_);
+    sortUnique(dropped_);
+    std::vector<BodyPair> merged;
+    merged.reserve(pairs_.size() + added_.size());
+    std::set_union(pairs_.begin(), pairs_.end(), added_.begin(), added_.end(),
+                   std::back_inserter(merged));
+    std::vector<BodyPair> result;
+    result.reserve(merged.size());
+    std::set_difference(merged.begin(), merged.end(), dropped_.begin(), dropped_.end(),
+                        std::back_inserter(result));
+    stats_.pairs_added += static_cast<std::int64_t>(merged.size() - pairs_.size());
+    stats_.pairs_removed += static_cast<std::int64_t>(merged.size() - result.size());
+    pairs_.swap(result);
+    added_.clear();
+    dropped_.clear();
+}
+
+void SweepAndPrune::rebuild() {
+    // Many new bodies: insertion from +inf would cost O(n²) swaps; sort and sweep instead.
+    auto order = [](const EndPoint& x, const EndPoint& y) {
+        if (before(x, y)) return true;
+        if (before(y, x)) return false;
+        return x.body < y.body;
+    };
+    for (auto& axis : axes_) std::sort(axis.begin(), axis.end(), order);
+    std::vector<BodyPair> found;
+    std::vector<int> active;
+    for (const EndPoint& e : axes_[0]) {
+        if (e.is_upper) {
+            const auto it = std::find(active.begin(), active.end(), e.body);
+            if (it != active.end()) active.erase(it);
+            continue;
+        }
+        for (int other : active) {
+            if (pairAllowed(e.body, other) && boxes_[e.body].overlaps(boxes_[other])) {
+                found.push_back(ordered(e.body, other));
+            }
+        }
+        active.push_back(e.body);
+    }
+    sortUnique(found);
+    std::vector<BodyPair> diff;
+    std::set_difference(found.begin(), found.end(), pairs_.begin(), pairs_.end(),
+                        std::back_inserter(diff));
+    stats_.pairs_added += static_cast<std::int64_t>(diff.size());
+    diff.clear();
+    std::set_difference(pairs_.begin(), pairs_.end(), found.begin(), found.end(),
+                        std::back_inserter(diff));
+    stats_.pairs_removed += static_cast<std::int64_t>(diff.size());
+    pairs_.swap(found);
+}
+
+void SweepAndPrune::update() {
+    ++stats_.updates;
+    writeValues();
+    if (pending_new_ > 64 && 8 * pending_new_ > bodyCount()) {
+        rebuild();
+    } else {
+        for (int axis = 0; axis < 3; ++axis) sortAxis(axis);
+        applyChanges();
+    }
+    pending_new_ = 0;
+}
+
+}  // namespace vroc::native

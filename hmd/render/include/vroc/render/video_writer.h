@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// MP4 output: raw RGB frames piped into an ffmpeg subprocess (libx264, yuv420p).
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "vroc/render/image.h"
+
+namespace vroc::render {
+
+class VideoWriter {
+public:
+    /// Starts `ffmpeg` writing `path` at `fps` frames per second for width x height frames
+    /// (both even, as yuv420p needs). Throws RunError if ffmpeg cannot start.
+    VideoWriter(const std::string& path, int width, int height, double fps);
+    ~VideoWriter();   ///< finishes if finish() was not called (errors ignored)
+    VideoWriter(const VideoWriter&) = delete;
+    VideoWriter& operator=(const VideoWriter&) = delete;
+
+    void addFrame(const Image& image);   ///< throws RunError on a size mismatch or broken pipe
+    /// Closes the pipe and waits for ffmpeg; throws RunError if it failed.
+    void finish();
+
+private:
+    std::string path_;
+    int width_;
+    int height_;
+    std::FILE* pipe_ = nullptr;
+};
+
+}  // namespace vroc::render

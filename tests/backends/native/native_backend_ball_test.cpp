@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// Ball drop (comparison-methodology §3.2): apexes h_n = e^(2n) h measured from the contact level,
+// exact parabolic flight between bounces.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "native_test_scenes.h"
+
+namespace vroc::native::test {
+namespace {
+
+struct Bounce {
+    double apex = -1.0;         // [m] bottom height at the apex, from the energy of the flight
+    int frames_in_flight = 0;
+    double worst_flight_error = 0.0;   // [m] vs the parabola through the first ascending frame
+};
+
+// Drops a ball of radius r from bottom height h; returns the contact level and the bounces.
+std::vector<Bounce> dropBall(double restitution, double h, int bounces, double& contact_level,
+                             ResponseModel model = ResponseModel::NewtonCoulomb) {
+    const double r = 0.1;
+    const double g = 9.81;
+    Scene s = emptyScene(1e-4);
+    const int mat = addMaterial(s, restitution, 0.5);
+    addFloor(s, mat);
+    const int ball = addBody(s, "ball", Shape::sphere(r), at(Vec3(0, 0, h + r)), mat, false);
+    NativeSettings ns;
+    ns.response = model;
+    auto be = makeBackend(s, ns);
+    std::vector<Bounce> out;
+    contact_level = -1.0;
+    double t0 = 0, z0 = 0, v0 = 0;
+    bool have_ref = false;
+    const double dt = s.frame_dt;
+    for (int f = 0; f < 60 * 60 && static_cast<int>(out.size()) <= bounces; ++f) {
+        be->stepFrame(dt);
+        const auto events = be->takeEvents();
+        const BodyState st = be->bodyState(ball);
+        const double z = st.pose.position.z() - r;
+        const double vz = st.linear_velocity.z();
+        if (!events.empty()) {
+            if (contact_level < 0.0) {
+                // Back along the (exact) flight to the event time: the bottom height at impact.
+                const double tau = be->time() - events.front().time;
+                contact_level = z - vz * tau - 0.5 * g * tau * tau;
+            }
+            have_ref = false;
+            out.push_back({});
+            continue;
+        }
+        if (out.empty()) continue;
+        Bounce& b = out.back();
+        if (!have_ref) {   // z + vz^2/2g is the apex anywhere on the (exact) parabola
+            have_ref = true;
+            t0 = be->time();
+            z0 = z;
+            v0 = vz;
+            b.apex = z + vz * vz / (2 * g);
+        }
+        if (have_ref) {
+            const double tau = be->time() - t0;
+            const double zp = z0 + v0 * tau - 0.5 * g * tau * tau;
+            b.worst_flight_error = std::max(b.worst_flight_error, std::abs(z - zp));
+            ++b.frames_in_flight;
+        }
+    }
+    return out;
+}
+
+TEST(NativeBall, RestitutionHalfApexesFollowE2n) {
+    const double e = 0.5, h = 1.0;
+    double level = 0;
+    const auto bounces = dropBall(e, h, 5, level);
+    ASSERT_GE(bounces.size(), 5u);
+    EXPECT_GT(level, 0.0);
+    EXPECT_LE(level, 1e-4);
+    for (int n = 1; n <= 5; ++n) {
+        const double expected = std::pow(e, 2 * n) * (h - level);
+        const double got = bounces[n - 1].apex - level;
+        EXPECT_NEAR(got, expected, 0.01 * expected) << "apex " << n;
+    }
+}
+
+TEST(NativeBall, ElasticBallKeepsItsHeightAfterTenBounces) {
+    const double h = 1.0;
+    double level = 0;
+    const auto bounces = dropBall(1.0, h, 10, level);
+    ASSERT_GE(bounces.size(), 10u);
+    for (int n = 1; n <= 10; ++n) {
+        EXPECT_NEAR(bounces[n - 1].apex - level, h - level, 0.01 * (h - level)) << "apex " << n;
+    }
+}
+
+TEST(NativeBall, FlightBetweenBouncesIsExact) {
+    double level = 0;
+    const auto bounces = dropBall(0.8, 1.0, 4, level);
+    ASSERT_GE(bounces.size(), 4u);
+    for (std::size_t n = 0; n + 1 < bounces.size(); ++n) {
+        EXPECT_GT(bounces[n].frames_in_flight, 5);
+        EXPECT_LT(bounces[n].worst_flight_error, 1e-6) << "bounce " << n + 1;
+    }
+}
+
+TEST(NativeBall, Vroc1995ModelBouncesWithTheMinimumElasticity) {
+    const double e = 0.5, h = 1.0;
+    double level = 0;
+    const auto bounces = dropBall(e, h, 3, level, ResponseModel::Vroc1995);
+    ASSERT_GE(bounces.size(), 3u);
+    for (int n = 1; n <= 3; ++n) {
+        const double expected = std::pow(e, 2 * n) * (h - level);
+        EXPECT_NEAR(bounces[n - 1].apex - level, expected, 0.01 * expected) << "apex " << n;
+    }
+}
+
+}  // namespace
+}  // namespace vroc::native::test

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// `vroc check`: runs the analytic suite on each backend, prints the check x backend table and
+// writes metrics.json and report.html. Exit code 1 when a check required for "native" fails on
+// the backend named native.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "vroc/harness/backend_selection.h"
+#include "vroc/harness/metrics_document.h"
+
+namespace vroc::harness {
+
+struct CheckOptions {
+    bool long_set = false;
+    bool progress = true;
+    std::string command_line;
+    std::vector<std::string> only;   ///< scenario ids to run (empty: all)
+};
+
+/// Runs the suite; the document's results.checks lists every metric with per-backend
+/// {measured, pass} and results.required_failures_native counts the failures that set exit 1.
+Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& options);
+
+/// The plain-text table printed on stdout.
+std::string checkTableText(const Json& doc);
+
+/// Exit code for a finished suite: 1 if a required-for-native check failed on native, else 0.
+int checkExitCode(const Json& doc);
+
+}  // namespace vroc::harness

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+// The analytic suite of `vroc check` (comparison-methodology.md §3): scenes built in code, each
+// with closed-form answers, tolerances and a "required for native" flag.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "vroc/core/scene.h"
+#include "vroc/harness/run_trace.h"
+
+namespace vroc::harness {
+
+struct CheckMetric {
+    std::string id;            ///< unique in the suite, e.g. "bounce-e0.8.apex-ratio"
+    std::string title;         ///< what is measured
+    std::string closed_form;   ///< the formula the expected value comes from
+    std::string units;         ///< of measured, expected and tolerance
+    double expected = 0;
+    double tolerance = 0;      ///< pass iff |measured - expected| <= tolerance
+    bool required_for_native = false;
+    std::function<double(const Scene&, const RunTrace&)> measure;
+};
+
+struct CheckScenario {
+    std::string id;
+    std::string description;
+    std::function<Scene()> build;
+    double duration = 1.0;     ///< [s]
+    double frame_dt = 1.0 / 240.0;   ///< [s]
+    std::vector<CheckMetric> metrics;
+};
+
+/// The default set (< 2 min on one core for two backends), or the long set appended to it.
+std::vector<CheckScenario> checkScenarios(bool long_set);
+
+/// A scenario by id from the default and long sets (for `vroc sweep check:<id>`); throws InputError.
+CheckScenario findCheckScenario(const std::string& id);
+
+}  // namespace vroc::harness

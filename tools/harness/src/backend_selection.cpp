@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#include "vroc/harness/backend_selection.h"
+
+#include <cstdio>
+#include <set>
+#include <utility>
+
+#include "vroc/core/backend_registry.h"
+#include "vroc/core/errors.h"
+
+namespace vroc::harness {
+
+std::vector<SelectedBackend> selectBackends(const std::string& list, const std::vector<std::string>& assignments) {
+    const BackendRegistry& registry = BackendRegistry::global();
+    std::vector<std::string> names;
+    if (list.empty()) {
+        for (const BackendInfo* info : registry.all()) names.push_back(info->name);
+    } else {
+        std::string word;
+        for (char c : list + ",") {
+            if (c != ',') { word += c; continue; }
+            if (word.empty()) throw InputError("--backends: empty name in '" + list + "' (expected a,b,...)");
+            names.push_back(word);
+            word.clear();
+        }
+    }
+    if (names.empty()) throw InputError("--backends: no backend is registered in this build");
+    std::set<std::string> seen;
+    std::vector<SelectedBackend> out;
+    std::vector<std::vector<std::pair<std::string, std::string>>> overrides(names.size());
+    for (const std::string& name : names) {
+        if (!seen.insert(name).second) throw InputError("--backends: '" + name + "' given twice");
+        out.push_back({&registry.require(name), {}});
+    }
+    for (const std::string& a : assignments) {
+        auto kv = splitAssignment(a);
+        const std::string prefix = kv.first.substr(0, kv.first.find('.'));
+        bool routed = false;
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (names[i] == prefix) { overrides[i].push_back(kv); routed = true; }
+        if (!routed && !registry.find(prefix))
+            throw InputError("--set " + a + ": the key must start with a backend name and '.', e.g. bullet.substeps");
+    }
+    for (std::size_t i = 0; i < out.size(); ++i) out[i].settings = resolveSettings(out[i].info->settings, overrides[i]);
+    return out;
+}
+
+Json backendsJson(const std::vector<SelectedBackend>& backends) {
+    Json out = Json::array();
+    for (const SelectedBackend& b : backends)
+        out.push_back({{"name", b.info->name}, {"version", b.info->version}, {"description", b.info->description},
+                       {"settings", b.settings.values()}});
+    return out;
+}
+
+void progressLine(const std::string& command, const std::string& text) {
+    std::fprintf(stderr, "vroc %s: %s\n", command.c_str(), text.c_str());
+    std::fflush(stderr);
+}
+
+}  // namespace vroc::harness

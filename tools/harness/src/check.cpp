@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+#include "vroc/harness/check.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "vroc/harness/check_suite.h"
+#include "vroc/harness/html_report.h"
+
+namespace vroc::harness {
+namespace {
+
+constexpr const char* kNative = "native";
+
+bool passes(double measured, const CheckMetric& m) {
+    return std::isfinite(measured) && std::abs(measured - m.expected) <= m.tolerance;
+}
+
+}  // namespace
+
+Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& o) {
+    std::vector<CheckScenario> scenarios = checkScenarios(o.long_set);
+    if (!o.only.empty())
+        std::erase_if(scenarios, [&](const CheckScenario& s) { return std::find(o.only.begin(), o.only.end(), s.id) == o.only.end(); });
+    Json doc = newDocument("check", o.command_line);
+    doc["title"] = std::string("analytic suite (") + (o.long_set ? "long" : "default") + " set)";
+    doc["backends"] = backendsJson(backends);
+    doc["parameters"] = {{"long", o.long_set}, {"scenarios", scenarios.size()}};
+    Json checks = Json::array();
+    Json wall = Json::object();
+    int native_failures = 0;
+    std::size_t s_index = 0;
+    for (const CheckScenario& sc : scenarios) {
+        ++s_index;
+        const Scene scene = sc.build();
+        std::vector<Json> rows(sc.metrics.size(), Json::object());
+        for (std::size_t m = 0; m < sc.metrics.size(); ++m) {
+            const CheckMetric& cm = sc.metrics[m];
+            rows[m] = {{"id", cm.id}, {"scenario", sc.id}, {"title", cm.title}, {"closed_form", cm.closed_form},
+                       {"units", cm.units}, {"expected", cm.expected}, {"tolerance", cm.tolerance},
+                       {"required_for_native", cm.required_for_native}, {"results", Json::object()}};
+        }
+        for (const SelectedBackend& b : backends) {
+            if (o.progress) {
+                char count[48];
+                std::snprintf(count, sizeof count, "[%zu/%zu] ", s_index, scenarios.size());
+                progressLine("check", count + sc.id + " on " + b.info->name);
+            }
+            RunOptions ro;
+            ro.frame_dt = sc.frame_dt;
+            ro.frames = framesFor(sc.duration, sc.frame_dt);
+            const auto start = std::chrono::steady_clock::now();
+            const RunTrace trace = runBackend(*b.info, scene, b.settings, ro);
+            for (std::size_t m = 0; m < sc.metrics.size(); ++m) {
+                const CheckMetric& cm = sc.metrics[m];
+                const double measured = trace.finite ? cm.measure(scene, trace) : NAN;
+                const bool ok = passes(measured, cm);
+                if (!ok && cm.required_for_native && b.info->name == kNative) ++native_failures;
+                rows[m]["results"][b.info->name] = {{"measured", number(measured)}, {"pass", ok}};
+            }
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            wall[b.info->name] = wall.value(b.info->name, 0.0) + seconds;
+        }
+        for (Json& r : rows) checks.push_back(r);
+    }
+    doc["results"] = {{"checks", checks}, {"wall_time_s", wall}, {"required_failures_native", native_failures}};
+
+    // Table: one row per check metric, measured and pass/fail per backend.
+    std::vector<std::string> columns = {"check", "closed form", "units", "expected", "tolerance", "required for native"};
+    for (const SelectedBackend& b : backends) {
+        columns.push_back(b.info->name + " measured");
+        columns.push_back(b.info->name + " result");
+    }
+    std::vector<std::vector<Json>> rows;
+    for (const Json& c : checks) {
+        std::vector<Json> row = {c["id"], c["closed_form"], c["units"], c["expected"], c["tolerance"], c["required_for_native"]};
+        for (const SelectedBackend& b : backends) {
+            row.push_back(c["results"][b.info->name]["measured"]);
+            row.push_back(c["results"][b.info->name]["pass"].get<bool>() ? "pass" : "FAIL");
+        }
+        rows.push_back(row);
+    }
+    doc["tables"].push_back(tableJson("checks", "Checks x backends", columns, rows));
+    // Chart: error relative to tolerance, per check, one series per backend (1 = the tolerance).
+    ChartSpec chart{"check-errors", "Check error / tolerance (below 1 passes; zero errors drawn at 1e-6)",
+                    "check number (table order)", "|measured - expected| / tolerance [-]", false, true, {}};
+    for (const SelectedBackend& b : backends) {
+        ChartSeries s{b.info->name, "points", {}, {}};
+        for (std::size_t i = 0; i < checks.size(); ++i) {
+            const Json& c = checks[i];
+            const Json& meas = c["results"][b.info->name]["measured"];
+            const double tol = c["tolerance"];
+            const double err = meas.is_null() ? 1e6 : std::abs(meas.get<double>() - c["expected"].get<double>());
+            const double ratio = tol > 0 ? err / tol : (err > 0 ? 1e6 : 0);
+            s.x.push_back(static_cast<double>(i + 1));
+            s.y.push_back(std::max(ratio, 1e-6));
+        }
+        chart.series.push_back(s);
+    }
+    chart.series.push_back({"tolerance", "lines", {0.5, checks.size() + 0.5}, {1.0, 1.0}});
+    doc["charts"].push_back(chartJson(chart));
+    return doc;
+}
+
+std::string checkTableText(const Json& doc) {
+    std::string out;
+    char line[512];
+    std::vector<std::string> names;
+    for (const Json& b : doc["backends"]) names.push_back(b["name"]);
+    std::snprintf(line, sizeof line, "%-36s %-5s %12s %10s", "check", "req", "expected", "tolerance");
+    out += line;
+    for (const auto& n : names) { std::snprintf(line, sizeof line, " | %-8s %12s %-4s", n.c_str(), "measured", ""); out += line; }
+    out += "\n";
+    for (const Json& c : doc["results"]["checks"]) {
+        std::snprintf(line, sizeof line, "%-36s %-5s %12.4g %10.3g", c["id"].get<std::string>().c_str(),
+                      c["required_for_native"].get<bool>() ? "yes" : "no", c["expected"].get<double>(), c["tolerance"].get<double>());
+        out += line;
+        for (const auto& n : names) {
+            const Json& r = c["results"][n];
+            std::snprintf(line, sizeof line, " | %-8s %12s %-4s", "", cellText(r["measured"]).c_str(), r["pass"].get<bool>() ? "pass" : "FAIL");
+            out += line;
+        }
+        out += "\n";
+    }
+    return out;
+}
+
+int checkExitCode(const Json& doc) { return doc["results"]["required_failures_native"].get<int>() > 0 ? 1 : 0; }
+
+}  // namespace vroc::harness

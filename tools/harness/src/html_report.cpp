@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+#include "vroc/harness/html_report.h"
+
+#include <cstdio>
+#include <sstream>
+
+#include "vroc/core/recording/atomic_output.h"
+#include "vroc/harness/gnuplot_chart.h"
+
+namespace vroc::harness {
+namespace fs = std::filesystem;
+
+std::string htmlEscaped(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string cellText(const Json& cell) {
+    if (cell.is_null()) return "\u2014";
+    if (cell.is_boolean()) return cell.get<bool>() ? "yes" : "no";
+    if (cell.is_number_integer()) return std::to_string(cell.get<long long>());
+    if (cell.is_number()) {
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "%.4g", cell.get<double>());
+        return buf;
+    }
+    if (cell.is_string()) return cell.get<std::string>();
+    return cell.dump();
+}
+
+namespace {
+
+constexpr const char* kStyle = R"(body{font-family:sans-serif;margin:24px;max-width:1100px;color:#222}
+table{border-collapse:collapse;margin:8px 0 20px}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}
+th{background:#eef}td:first-child,th:first-child{text-align:left}.text{text-align:left}.pass{background:#dfd}.fail{background:#fbb;font-weight:bold}
+figure{margin:12px 0 28px}figcaption{font-weight:bold}h2{border-bottom:2px solid #88a;margin-top:36px}
+pre{background:#f4f4f4;padding:8px;white-space:pre-wrap})";
+
+std::string tableHtml(const Json& table) {
+    std::ostringstream h;
+    h << "<h3>" << htmlEscaped(table.value("title", "")) << "</h3>\n<table id=\"table-" << htmlEscaped(table.value("id", ""))
+      << "\"><tr>";
+    for (const Json& c : table["columns"]) h << "<th>" << htmlEscaped(c.get<std::string>()) << "</th>";
+    h << "</tr>\n";
+    for (const Json& row : table["rows"]) {
+        h << "<tr>";
+        for (const Json& cell : row) {
+            const std::string text = cellText(cell);
+            const char* cls = text == "pass"   ? " class=\"pass\""
+                              : text == "FAIL" ? " class=\"fail\""
+                              : cell.is_string() ? " class=\"text\""
+                                                 : "";
+            h << "<td" << cls << ">" << htmlEscaped(text) << "</td>";
+        }
+        h << "</tr>\n";
+    }
+    return h.str() + "</table>\n";
+}
+
+std::string settingsHtml(const Json& doc) {
+    std::ostringstream h;
+    h << "<h3>Settings, versions and build</h3>\n";
+    if (doc.contains("scene")) h << "<p>Scene: <code>" << htmlEscaped(doc["scene"].dump()) << "</code></p>\n";
+    if (doc.contains("backends")) {
+        h << "<table><tr><th>backend</th><th>version</th><th>settings</th></tr>\n";
+        for (const Json& b : doc["backends"]) {
+            std::string settings;
+            const Json values = b.value("settings", Json::object());   // items() must not outlive it
+            for (const auto& [k, v] : values.items()) settings += k + "=" + cellText(v) + " ";
+            h << "<tr><td>" << htmlEscaped(b.value("name", "")) << "</td><td>" << htmlEscaped(b.value("version", ""))
+              << "</td><td>" << htmlEscaped(settings) << "</td></tr>\n";
+        }
+        h << "</table>\n";
+    }
+    if (doc.contains("parameters")) h << "<p>Parameters: <code>" << htmlEscaped(doc["parameters"].dump()) << "</code></p>\n";
+    h << "<p>Build: <code>" << htmlEscaped(doc.value("build", Json::object()).dump()) << "</code></p>\n"
+      << "<p>Command: <code>" << htmlEscaped(doc.value("command_line", "")) << "</code>, written "
+      << htmlEscaped(doc.value("created_utc", "")) << "</p>\n";
+    return h.str();
+}
+
+std::string documentHtml(const Json& doc, const fs::path& chart_dir, std::size_t index) {
+    std::ostringstream h;
+    h << "<section id=\"doc-" << index << "\">\n<h2>vroc " << htmlEscaped(doc.value("command", "")) << ": "
+      << htmlEscaped(doc.value("title", "")) << "</h2>\n";
+    if (doc.contains("summary")) h << "<p>" << htmlEscaped(doc["summary"].get<std::string>()) << "</p>\n";
+    for (const Json& t : doc["tables"]) h << tableHtml(t);
+    for (const Json& chart : doc["charts"]) {
+        Json placed = chart;
+        std::string id(1, 'd');
+        id += std::to_string(index) + "-" + chart["id"].get<std::string>();
+        placed["id"] = id;
+        h << "<figure class=\"chart\" id=\"chart-" << htmlEscaped(placed["id"]) << "\" data-series=\""
+          << chart["series"].size() << "\">\n<figcaption>" << htmlEscaped(chart["title"].get<std::string>())
+          << "</figcaption>\n" << renderChart(placed, chart_dir) << "\n</figure>\n";
+    }
+    h << settingsHtml(doc) << "</section>\n";
+    return h.str();
+}
+
+}  // namespace
+
+fs::path writeReport(const std::vector<Json>& documents, const fs::path& out_dir) {
+    fs::create_directories(out_dir);
+    std::ostringstream h;
+    h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>VROC report</title>\n<style>" << kStyle
+      << "</style></head><body>\n<h1>VROC comparison report</h1>\n";
+    for (std::size_t i = 0; i < documents.size(); ++i) h << documentHtml(documents[i], out_dir / "charts", i);
+    h << "</body></html>\n";
+    const fs::path path = out_dir / "report.html";
+    recording::AtomicFile file(path);
+    file.write(h.str());
+    file.commit();
+    return path;
+}
+
+}  // namespace vroc::harness

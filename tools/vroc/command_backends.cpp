@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// `vroc backends`: what can be passed to --backend, with versions and --set keys.
+#include <cstdio>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "command.h"
+#include "vroc/core/backend_registry.h"
+
+namespace vroc::cli {
+namespace {
+
+struct BackendsOptions {
+    bool names_only = false;
+};
+
+int listBackends(const BackendsOptions& options) {
+    const auto backends = BackendRegistry::global().all();
+    for (const BackendInfo* info : backends) {
+        if (options.names_only) {
+            std::printf("%s\n", info->name.c_str());
+            continue;
+        }
+        std::printf("%s  %s\n  %s\n", info->name.c_str(), info->version.c_str(), info->description.c_str());
+        if (info->settings.empty()) std::printf("  settings: none\n");
+        else std::printf("  settings (--set key=value):\n");
+        for (const SettingSpec& spec : info->settings) std::printf("    %s\n", spec.describe().c_str());
+    }
+    if (backends.empty() && !options.names_only) std::printf("(no backends registered)\n");
+    return 0;
+}
+
+Action setup(CLI::App& sub, const Context&) {
+    auto options = std::make_shared<BackendsOptions>();
+    sub.add_flag("--names", options->names_only, "Print only the backend names, one per line (for scripts)");
+    return [options] { return listBackends(*options); };
+}
+
+}  // namespace
+
+Command makeBackendsCommand() {
+    return {"backends", "List the registered physics backends: description, version and --set keys", &setup};
+}
+
+}  // namespace vroc::cli

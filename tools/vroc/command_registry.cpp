@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+#include "command.h"
+
+// To add a command: write command_<name>.cpp defining `vroc::cli::Command make<Name>Command()`
+// and add one line X(<Name>) to this list.
+#define VROC_COMMAND_LIST(X) \
+    X(Backends)              \
+    X(Run)                   \
+    X(Compare) X(Check) X(Sweep) X(Report) \
+    X(Plugins)               \
+    X(Play)
+
+namespace vroc::cli {
+
+#define VROC_DECLARE_COMMAND(Name) Command make##Name##Command();
+VROC_COMMAND_LIST(VROC_DECLARE_COMMAND)
+#undef VROC_DECLARE_COMMAND
+
+std::span<const Command> allCommands() {
+#define VROC_LIST_COMMAND(Name) make##Name##Command(),
+    static const Command commands[] = {VROC_COMMAND_LIST(VROC_LIST_COMMAND)};
+#undef VROC_LIST_COMMAND
+    return commands;
+}
+
+}  // namespace vroc::cli

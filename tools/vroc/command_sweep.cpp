@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// `vroc sweep SCENE --backends ...`: speed against accuracy, Erez-style (docs/harness.md).
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "command.h"
+#include "vroc/core/errors.h"
+#include "vroc/core/recording/atomic_output.h"
+#include "vroc/harness/html_report.h"
+#include "vroc/harness/output_dir.h"
+#include "vroc/harness/sweep.h"
+
+namespace vroc::cli {
+namespace {
+
+struct SweepArgs {
+    std::string scene;
+    std::string backends;
+    std::string out_dir;
+    std::string dts;
+    std::string details;
+    std::optional<double> reference_dt;
+    std::optional<double> target;
+    std::vector<std::string> assignments;
+    harness::SweepOptions options;
+    bool quiet = false;
+};
+
+// "1/60,1/120,0.002" -> seconds.
+std::vector<double> parseSteps(const std::string& list) {
+    std::vector<double> out;
+    std::string word;
+    for (char c : list + ",") {
+        if (c != ',') { word += c; continue; }
+        char* end = nullptr;
+        double v = 0;
+        if (word.rfind("1/", 0) == 0) {
+            const double d = std::strtod(word.c_str() + 2, &end);
+            v = d > 0 ? 1 / d : 0;
+        } else {
+            v = std::strtod(word.c_str(), &end);
+        }
+        if (word.empty() || *end != '\0' || !(v > 0)) throw InputError("--dt: '" + word + "': expected a step in seconds (0.004 or 1/240)");
+        out.push_back(v);
+        word.clear();
+    }
+    return out;
+}
+
+int sweep(SweepArgs& a, const Context& context) {
+    const auto backends = harness::selectBackends(a.backends, a.assignments);
+    if (!a.dts.empty()) a.options.dts = parseSteps(a.dts);
+    if (!a.details.empty()) a.options.details = harness::parseDetailLevels(a.details);
+    if (a.target && !(*a.target > 0)) throw InputError("--target: expected a positive error in metres");
+    if (!(a.options.duration > 0)) throw InputError("--duration: expected a positive number of seconds");
+    a.options.reference_dt = a.reference_dt;
+    a.options.target = a.target;
+    a.options.progress = !a.quiet;
+    a.options.command_line = context.command_line;
+    const harness::SweepScene scene = harness::loadSweepScene(a.scene);
+    const auto out = a.out_dir.empty() ? harness::defaultOutputDir("sweep", scene.scene.name) : std::filesystem::path(a.out_dir);
+    recording::prepareOutputDirectory(out);
+    const harness::Json doc = harness::runSweep(scene, backends, a.options);
+    harness::writeDocument(doc, out / "metrics.json");
+    const auto report = harness::writeReport({doc}, out);
+    for (const auto& p : doc["results"]["pareto_front"])
+        std::printf("vroc sweep: Pareto front: %s dt %.6g s, cost %.4g s/s, error %.3g m\n", p["backend"].get<std::string>().c_str(),
+                    p["dt_s"].get<double>(), p["cost_wall_per_sim_s"].get<double>(), p["window_error_m"].get<double>());
+    std::printf("vroc sweep: report %s\n", std::filesystem::absolute(report).lexically_normal().string().c_str());
+    return 0;
+}
+
+Action setup(CLI::App& sub, const Context& context) {
+    auto a = std::make_shared<SweepArgs>();
+    sub.add_option("scene", a->scene, "Scene file, or check:<id> for a built-in check scene with a closed form")->required();
+    sub.add_option("--backends", a->backends, "Backends, comma-separated (default: all)");
+    sub.add_option("--out,-o", a->out_dir, "Output directory (default runs/sweep-<scene>-<time>/)");
+    sub.add_option("--dt", a->dts, "Frame steps, comma-separated, e.g. 1/60,1/120,1/240 (default 1/60 .. 1/960, factor 2)");
+    sub.add_option("--reference-dt", a->reference_dt, "Step of the self-consistency reference [s] (default smallest/8)");
+    sub.add_option("--duration", a->options.duration, "Simulated time of each run [s] (default 2)");
+    sub.add_option("--windows", a->options.windows, "Number of re-anchored windows (default 10)");
+    sub.add_option("--window", a->options.window, "Window length [s] (default 0.1)");
+    sub.add_option("--detail", a->details, "Model detail levels: full, fractions of hull vertices, sphere (e.g. full,0.5,0.25,sphere)");
+    sub.add_option("--target", a->target, "Target window error [m]: name the cheapest detail level meeting it");
+    sub.add_option("--set", a->assignments, "Backend setting key=value (key starts with the backend name), repeatable")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    sub.add_flag("--quiet,-q", a->quiet, "No progress lines");
+    sub.footer("Writes metrics.json and report.html (speed-accuracy chart with the Pareto front, robustness limit).");
+    return [a, context] { return sweep(*a, context); };
+}
+
+}  // namespace
+
+Command makeSweepCommand() {
+    return {"sweep", "Speed vs accuracy over frame steps and model detail; Pareto front, robustness limit", &setup};
+}
+
+}  // namespace vroc::cli

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+// `vroc`: the command-line program. Parses with CLI11, runs the chosen command and maps errors to
+// exit codes: 0 success, 2 bad input or usage, 3 failure while running (docs/cli.md).
+#include <unistd.h>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "command.h"
+#include "register_backends.h"
+#include "vroc/core/build_info.h"
+#include "vroc/core/errors.h"
+
+namespace {
+
+constexpr int kExitInput = 2;
+constexpr int kExitRun = 3;
+
+// Every error is one line: multi-line messages (e.g. the list of valid --set keys) are joined.
+std::string oneLine(const std::string& message) {
+    std::string out;
+    bool at_line_start = false;
+    for (char c : message) {
+        if (c == '\n' || c == '\r') {
+            if (!out.empty() && out.back() != ' ') out += out.back() == ':' ? " " : "; ";
+            at_line_start = true;
+            continue;
+        }
+        if (at_line_start && (c == ' ' || c == '\t')) continue;
+        at_line_start = false;
+        out += c;
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    return out;
+}
+
+int fail(int code, const std::string& message) {
+    std::fprintf(stderr, "vroc: error: %s\n", oneLine(message).c_str());
+    return code;
+}
+
+std::string shellQuoted(const std::string& word) {
+    if (!word.empty() && word.find_first_of(" \t\n'\"\\$`*?[]{}()<>|&;#~") == std::string::npos) return word;
+    std::string out = "'";
+    for (char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string joinCommandLine(int argc, char** argv) {
+    std::string out;
+    for (int i = 0; i < argc; ++i) out += (i ? " " : "") + shellQuoted(argv[i]);
+    return out;
+}
+
+std::string versionText() {
+    const auto& b = vroc::buildInfo();
+    return "vroc " + b.version + " (commit " + b.commit + ", " + b.compiler + ", " + b.flags + ")";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    vroc::cli::registerBackends();
+    vroc::cli::Context context{joinCommandLine(argc, argv), ::isatty(STDERR_FILENO) == 1};
+
+    CLI::App app{"VROC: collision detection and response between virtual objects and a static model "
+                 "of the real world, with physics backends chosen at run time and compared.",
+                 "vroc"};
+    app.set_version_flag("--version", versionText());
+    app.require_subcommand(1);
+    app.footer("Run `vroc <command> --help` for a command's options.\n"
+               "Exit codes: 0 success, 2 bad input or usage, 3 failure while running.");
+
+    struct Entry {
+        CLI::App* sub;
+        vroc::cli::Action action;
+    };
+    std::vector<Entry> entries;
+    for (const auto& command : vroc::cli::allCommands()) {
+        CLI::App* sub = app.add_subcommand(command.name, command.summary);
+        entries.push_back({sub, command.setup(*sub, context)});
+    }
+
+    // CLI11 reports an unknown command word as "a subcommand is required"; say what was wrong.
+    if (argc > 1 && argv[1][0] != '-') {
+        std::string known;
+        bool found = false;
+        for (const auto& command : vroc::cli::allCommands()) {
+            known += (known.empty() ? "" : ", ") + std::string(command.name);
+            found = found || argv[1] == std::string(command.name);
+        }
+        if (!found) return fail(kExitInput, "unknown command '" + std::string(argv[1]) + "' (known: " + known + ")");
+    }
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::string help = "vroc --help";
+        for (const auto& entry : entries)
+            if (entry.sub->parsed()) help = "vroc " + entry.sub->get_name() + " --help";
+        return fail(kExitInput, std::string(e.what()) + " (see `" + help + "`)");
+    }
+
+    try {
+        for (const auto& entry : entries)
+            if (entry.sub->parsed()) return entry.action();
+        return fail(kExitInput, "no command given (see `vroc --help`)");
+    } catch (const vroc::InputError& e) {
+        return fail(kExitInput, e.what());
+    } catch (const vroc::RunError& e) {
+        return fail(kExitRun, e.what());
+    } catch (const std::exception& e) {
+        return fail(kExitRun, std::string("unexpected failure: ") + e.what());
+    }
+}

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// A one-line progress bar on stderr, redrawn at most 10 times a second. Disabled (draws nothing)
+// when stderr is not a terminal or the user asked for --quiet, so logs hold only errors.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+namespace vroc::cli {
+
+class ProgressBar {
+public:
+    ProgressBar(bool enabled, std::string label);
+    ~ProgressBar();   ///< clears the line if anything was drawn
+
+    void update(std::int64_t done, std::int64_t total);
+
+private:
+    void clear();
+
+    bool enabled_;
+    bool drawn_ = false;
+    std::string label_;
+    std::chrono::steady_clock::time_point last_draw_{};
+};
+
+}  // namespace vroc::cli
