@@ -4,7 +4,6 @@ find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(fmt REQUIRED)
-find_package(spdlog REQUIRED)          # compiled library (SPDLOG_COMPILED_LIB), not header-only
 find_package(assimp REQUIRED)
 find_package(ccd REQUIRED)
 find_package(GTest REQUIRED)

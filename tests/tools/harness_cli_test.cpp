@@ -41,8 +41,9 @@ TEST(HarnessCli, CheckOnBulletWritesTableMetricsAndReport) {
         const Json& res = c["results"]["bullet"];
         const bool pass = res["pass"].get<bool>();
         // pass is exactly |measured - expected| <= tolerance
-        if (!res["measured"].is_null())
+        if (!res["measured"].is_null()) {
             EXPECT_EQ(pass, std::abs(res["measured"].get<double>() - c["expected"].get<double>()) <= c["tolerance"].get<double>()) << c.dump();
+        }
         EXPECT_NE(r.out.find(c["id"].get<std::string>()), std::string::npos);
     }
     EXPECT_TRUE(fs::exists(dir / "out" / "report.html"));

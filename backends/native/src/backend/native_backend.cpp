@@ -22,6 +22,8 @@ constexpr double kTouchingFloor = 0.25;
 constexpr double kTouchingMinAllowance = 0.125;
 // How far ahead [s] a pair's earliest collision time is computed for the queue.
 constexpr double kQueueHorizon = 1.0;
+// Due pairs below this count are sampled on the calling thread (see internalStep).
+constexpr std::size_t kMinParallelPairs = 8;
 
 }  // namespace
 
@@ -282,6 +284,7 @@ double NativeBackend::contactBoundedStep(const std::vector<PairSample>& samples,
     const double cd = scene_.collision_distance;
     double best = h;
     for (const PairSample& s : samples) {
+        if (s.deferred) continue;   // its flight to the contact time is certified by deferImpacts
         const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
         const MotionBound ma = stepBound(ps.a, imp[ps.a], h);
         const MotionBound mb = stepBound(ps.b, imp[ps.b], h);
@@ -325,8 +328,16 @@ double NativeBackend::internalStep(double frame_start, double elapsed, double re
         syncBody(ps.b, t);
     }
 
-    std::vector<PairSample> samples = partition_->map<PairSample>(
-        due.size(), [&](std::size_t k) { return samplePair(due[k]); });
+    // A pair's sample is a pure function of that pair, so running a short list on the calling
+    // thread (waking the pool costs more than a few queries) gives the same bits.
+    std::vector<PairSample> samples;
+    if (due.size() < kMinParallelPairs) {
+        samples.reserve(due.size());
+        for (int idx : due) samples.push_back(samplePair(idx));
+    } else {
+        samples = partition_->map<PairSample>(due.size(), [&](std::size_t k) { return samplePair(due[k]); });
+    }
+    if (!unbounded) h = deferImpacts(samples, t, h);
     std::vector<ContactManifold> manifolds;
     for (const PairSample& s : samples) {
         stats_.narrow_queries += s.queries;
@@ -346,10 +357,8 @@ double NativeBackend::internalStep(double frame_start, double elapsed, double re
     solver.model = settings_.response;
     solver.iterations = settings_.contact_iterations;
     solver.shock_iterations = settings_.shock_iterations;
-    if (!imp_clear_) {
-        std::fill(imp_.begin(), imp_.end(), BodyImpulse{});
-        imp_clear_ = true;
-    }
+    for (int id : imp_ids_) imp_[static_cast<std::size_t>(id)] = BodyImpulse{};
+    imp_ids_.clear();
     const std::vector<BodyImpulse>& imp = imp_;
     const double h_min = std::min(remaining, 1e-9);
     bool limited = false;
@@ -430,9 +439,9 @@ void NativeBackend::solveContacts(std::vector<ContactManifold>& manifolds, doubl
     std::vector<BodyImpulse> li;
     const ContactSolverReport rep = solveContactPhase(local, lm, h, scene_.gravity, solver, li);
     for (std::size_t m = 0; m < manifolds.size(); ++m) manifolds[m].contact_impulse = lm[m].contact_impulse;
-    std::fill(imp_.begin(), imp_.end(), BodyImpulse{});
+    for (int id : imp_ids_) imp_[static_cast<std::size_t>(id)] = BodyImpulse{};
     for (std::size_t k = 0; k < ids.size(); ++k) imp_[static_cast<std::size_t>(ids[k])] = li[k];
-    imp_clear_ = false;
+    imp_ids_ = std::move(ids);
     ++stats_.step_solves;
     stats_.contact_points += rep.points;
     if (rep.ill_conditioned > 0) warn("ill_conditioned_solve", static_cast<std::uint64_t>(rep.ill_conditioned));
@@ -440,8 +449,8 @@ void NativeBackend::solveContacts(std::vector<ContactManifold>& manifolds, doubl
 
 void NativeBackend::advanceBodies(const std::vector<BodyImpulse>& imp, double h, double t_next) {
     // Only bodies a contact impulse acted on move now; the others fly on lazily (syncBody).
-    if (imp_clear_) return;
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    for (int id : imp_ids_) {
+        const std::size_t i = static_cast<std::size_t>(id);
         RigidBody& rb = bodies_[i];
         if (rb.is_static || !imp[i].supported) continue;
         valid_at_[i] = t_next;

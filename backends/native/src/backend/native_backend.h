@@ -50,6 +50,7 @@ private:
         std::int64_t touching_step = -1;     // internal step index of that query
         double safe_until = -1.0;            // [s] no contact possible before (queue key)
         std::uint64_t version_a = 0, version_b = 0;   // body versions the key was computed with
+        bool placed_in_window = false;       // within the collision distance since its first query: resting, not refined (deferImpacts)
     };
     /// One step's narrow-phase answer for a pair.
     struct PairSample {
@@ -64,6 +65,7 @@ private:
         };
         std::vector<PartGap> parts;
         int queries = 0, walk_steps = 0, max_walk = 0, not_converged = 0;
+        bool deferred = false;   ///< approaching impact moved to its refined touching time (deferImpacts)
     };
 
     double internalStep(double frame_start, double elapsed, double remaining, bool unbounded);
@@ -86,6 +88,9 @@ private:
     void emitEvents(const std::vector<PairSample>& samples,
                     const std::vector<ContactManifold>& manifolds, double t);
     void separatePenetrating(const PairSample& s);
+    /// Impacts are resolved at touching, not at the window gap: shortens the step `h` [s] from `t` [s]
+    /// to the refined contact time and clears those samples' manifolds (scheduling/impact_deferral.cpp).
+    double deferImpacts(std::vector<PairSample>& samples, double t, double h);
     void bumpVersion(int body) {
         ++versions_[static_cast<std::size_t>(body)];
         box_dirty_[static_cast<std::size_t>(body)] = 1;
@@ -103,7 +108,7 @@ private:
     std::vector<std::uint8_t> box_dirty_;   // per body: its swept broad-phase box must be recomputed
     std::vector<int> candidates_;           // pairs_ indices of the current broad-phase pairs
     std::vector<BodyImpulse> imp_;          // per body: contact-phase impulses of the current step
-    bool imp_clear_ = true;                 // imp_ holds no supported body
+    std::vector<int> imp_ids_;              // bodies whose imp_ entry may be set, ascending
     double frame_end_ = 0.0;                // [s] end time of the frame being stepped
     SweepAndPrune broad_phase_;
     std::unique_ptr<PairPartition> partition_;

@@ -64,6 +64,15 @@ int advanceTorqueFree(RigidBody& body, double h) {
     if (body.is_static || h <= 0.0) return 0;
     const double wmax = body.maxAngularSpeed();
     if (wmax == 0.0) return 0;
+    if (body.isotropic) {
+        // ω = I⁻¹ L is constant: the rotation over h is exactly the angle |ω| h about ω.
+        const Vec3 w = body.angularVelocity();
+        const double speed = w.norm();
+        if (!(speed > 0.0)) return 0;
+        const Eigen::AngleAxisd turn(speed * h, w / speed);
+        body.orientation = (Quat(turn) * body.orientation).normalized();
+        return 1;
+    }
     const int n = std::max(1, static_cast<int>(std::ceil(wmax * h / kMaxSubstepAngle)));
     const double s = h / n;
     const Mat3& ib = body.inv_inertia_body;

@@ -13,7 +13,8 @@ inline constexpr double kMaxSubstepAngle = 0.01;
 /// Ballistic translation: com += v h + g h^2/2, v += g h. Exact in floating point terms.
 void advanceBallistic(RigidBody& body, double h, const Vec3& gravity);
 
-/// Torque-free rotation over `h` [s]: L (world) unchanged; orientation by RK4 sub-steps of at most
+/// Torque-free rotation over `h` [s]: L (world) unchanged. Isotropic bodies (ω constant) rotate in
+/// closed form, q <- exp(ω h / 2) q (returns 1). Others: orientation by RK4 sub-steps of at most
 /// kMaxSubstepAngle, then projected back onto the energy level set (|R^T L| is kept by R itself).
 /// Returns the number of sub-steps taken.
 int advanceTorqueFree(RigidBody& body, double h);

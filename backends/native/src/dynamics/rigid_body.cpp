@@ -52,6 +52,7 @@ RigidBody RigidBody::fromScene(const Body& body) {
         rb.inv_inertia_body = rb.inertia_body.inverse();
         Eigen::SelfAdjointEigenSolver<Mat3> eig(rb.inertia_body, Eigen::EigenvaluesOnly);
         rb.smallest_moment = eig.eigenvalues()(0);
+        rb.isotropic = eig.eigenvalues()(2) - eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(2);
         rb.velocity = body.linear_velocity;
         const Mat3 r = rb.rotation();
         rb.angular_momentum = r * rb.inertia_body * r.transpose() * body.angular_velocity;

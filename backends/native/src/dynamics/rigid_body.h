@@ -39,6 +39,9 @@ struct RigidBody {
     /// [rad/s] bound on |omega| over torque-free flight: |L| / smallest principal moment.
     double maxAngularSpeed() const;
     double smallest_moment = 0.0;       ///< [kg m^2] smallest principal moment (cached at creation)
+    /// All principal moments equal (to 1e-12 relative: spheres, cubes): ω = I⁻¹ L is constant in
+    /// torque-free flight, so the rotation has a closed form (cached at creation).
+    bool isotropic = false;
 
     static RigidBody fromScene(const Body& body);
     void setFromState(const Pose& pose, const Vec3& linear_velocity, const Vec3& angular_velocity);

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// NativeBackend::deferImpacts (declared in backend/native_backend.h; kept here with the contact
+// time refinement it drives, scheduling/contact_time_refinement.h). A pair inside the collision
+// window but not touching (gap > gap_max) is not resolved at the window gap: the step is shortened
+// to the refined touching time and the impulse is applied at the next step start, at a gap in
+// [0, gap_max]. Until then the pair has no manifold (no collision or contact impulse).
+#include <algorithm>
+#include <vector>
+
+#include "backend/native_backend.h"
+#include "scheduling/contact_time_refinement.h"
+
+namespace vroc::native {
+
+namespace {
+// The resolved gap relative to the pair's size (issue 4: touching "within 1e-9 of scale").
+constexpr double kTouchingGapPerSize = 1e-9;
+}  // namespace
+
+double NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, double h) {
+    // A body in contact with two pairs does not fly freely: its impacts are resolved as before.
+    std::vector<int> touches(bodies_.size(), 0);
+    for (const PairSample& s : samples) {
+        if (s.manifolds.empty()) continue;
+        const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        ++touches[static_cast<std::size_t>(ps.a)];
+        ++touches[static_cast<std::size_t>(ps.b)];
+    }
+    auto freeBody = [&](int body) {
+        return bodies_[static_cast<std::size_t>(body)].is_static || touches[static_cast<std::size_t>(body)] == 1;
+    };
+    // Only a single sphere against a real (static) body for now: after an impact at ~0 gap,
+    // contactBoundedStep still lets a touching pair close by kTouchingMinAllowance (1/8 of the
+    // collision distance), so a hull whose bounce spins another vertex down would penetrate
+    // (NativeRest.DroppedHullComesToRestWithinCollisionDistance). A sphere on a static body has a
+    // single contact point that the bounce moves straight away.
+    auto sphereOnStatic = [&](int sphere, int other) {
+        const BodyShape& sh = shapes_[static_cast<std::size_t>(sphere)];
+        return sh.parts.size() == 1 && sh.parts[0].is_sphere && bodies_[static_cast<std::size_t>(other)].is_static;
+    };
+    for (PairSample& s : samples) {
+        PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        // A pair placed within the collision distance (scenes put resting bodies there) is in
+        // contact from the start, as the collision distance defines; it stays so until it leaves
+        // the window (a step without a manifold, or not queried at the previous step). A pair
+        // first queried later (its broad-phase boxes just met) has flown in: it is not resting.
+        if (ps.touching_step < 0) ps.placed_in_window = t <= 0.0 && !s.manifolds.empty();
+        else if (s.manifolds.empty() || ps.touching_step != step_index_ - 1) ps.placed_in_window = false;
+        if (s.manifolds.empty() || ps.placed_in_window) continue;
+        if (!freeBody(ps.a) || !freeBody(ps.b)) continue;
+        if (!sphereOnStatic(ps.a, ps.b) && !sphereOnStatic(ps.b, ps.a)) continue;
+        const BodyShape& sa = shapes_[static_cast<std::size_t>(ps.a)];
+        const BodyShape& sb = shapes_[static_cast<std::size_t>(ps.b)];
+        const double gap_max = kTouchingGapPerSize * (sa.outer_radius + sb.outer_radius);
+        if (!(s.distance > gap_max)) continue;
+        // Not touching yet (gap > gap_max): the sphere flies freely inside the window too, rising
+        // or falling, so the contact phase must not catch it there (a bounce lower than the
+        // collision distance keeps its e^(2n) height). It is resolved when it touches.
+        const RigidBody& a = bodies_[static_cast<std::size_t>(ps.a)];
+        const RigidBody& b = bodies_[static_cast<std::size_t>(ps.b)];
+        std::vector<DistanceSample> now;
+        for (const PairSample::PartGap& g : s.parts) now.push_back({g.distance, g.normal});
+        const RefineResult r =
+            refineContactTime(flightGaps(a, sa, b, sb, ps.caches, scene_.gravity, t), now, ballisticBound(ps.a),
+                              ballisticBound(ps.b), t, t + h, gap_max);
+        stats_.narrow_queries += static_cast<std::int64_t>(r.queries * sa.parts.size() * sb.parts.size());
+        if (r.state == RefineState::Failed) continue;
+        // Clear: no touching within this step (its horizon may be a rounding sliver of a frame):
+        // the sphere just flies on. Otherwise the step ends at the refined time.
+        if (r.state != RefineState::Clear) h = std::min(h, r.time - t);
+        s.manifolds.clear();
+        s.deferred = true;
+    }
+    return h;
+}
+
+}  // namespace vroc::native
