@@ -14,6 +14,7 @@
 #include "vroc/harness/html_report.h"
 #include "vroc/harness/output_dir.h"
 #include "vroc/harness/sweep.h"
+#include "vroc/harness/sweep_curves.h"
 
 namespace vroc::cli {
 namespace {
@@ -62,6 +63,7 @@ int sweep(SweepArgs& a, const Context& context) {
     a.options.target = a.target;
     a.options.progress = !a.quiet;
     a.options.command_line = context.command_line;
+    harness::sweepCurves(backends, a.options.vary);   // bad --vary fails before any file is written
     const harness::SweepScene scene = harness::loadSweepScene(a.scene);
     const auto out = a.out_dir.empty() ? harness::defaultOutputDir("sweep", scene.scene.name) : std::filesystem::path(a.out_dir);
     recording::prepareOutputDirectory(out);
@@ -69,7 +71,7 @@ int sweep(SweepArgs& a, const Context& context) {
     harness::writeDocument(doc, out / "metrics.json");
     const auto report = harness::writeReport({doc}, out);
     for (const auto& p : doc["results"]["pareto_front"])
-        std::printf("vroc sweep: Pareto front: %s dt %.6g s, cost %.4g s/s, error %.3g m\n", p["backend"].get<std::string>().c_str(),
+        std::printf("vroc sweep: Pareto front: %s dt %.6g s, cost %.4g s/s, error %.3g m\n", p["series"].get<std::string>().c_str(),
                     p["dt_s"].get<double>(), p["cost_wall_per_sim_s"].get<double>(), p["window_error_m"].get<double>());
     std::printf("vroc sweep: report %s\n", std::filesystem::absolute(report).lexically_normal().string().c_str());
     return 0;
@@ -88,6 +90,9 @@ Action setup(CLI::App& sub, const Context& context) {
     sub.add_option("--detail", a->details, "Model detail levels: full, fractions of hull vertices, sphere (e.g. full,0.5,0.25,sphere)");
     sub.add_option("--target", a->target, "Target window error [m]: name the cheapest detail level meeting it");
     sub.add_option("--set", a->assignments, "Backend setting key=value (key starts with the backend name), repeatable")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    sub.add_option("--vary", a->options.vary, "Vary a backend setting, KEY=V1,V2,... (one curve per value), repeatable")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress lines");

@@ -9,6 +9,7 @@
 #include "vroc/harness/pareto.h"
 #include "vroc/harness/robustness.h"
 #include "vroc/harness/run_trace.h"
+#include "vroc/harness/sweep_curves.h"
 #include "vroc/harness/timing_stats.h"
 
 namespace vroc::harness {
@@ -86,10 +87,12 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& backends
     doc["parameters"] = {{"dts_s", dts}, {"reference_dt_s", ref_dt}, {"duration_s", o.duration}, {"windows", plan.anchors.size()},
                          {"window_s", plan.window_coarse * dt_max}, {"robustness_dts_s", robust_dts},
                          {"closed_form", in.closed_form ? Json(in.closed_form->id + ": " + in.closed_form->closed_form) : Json(nullptr)},
-                         {"target_m", o.target ? Json(*o.target) : Json(nullptr)}};
+                         {"target_m", o.target ? Json(*o.target) : Json(nullptr)}, {"vary", o.vary}};
 
     std::vector<CostError> points;
-    std::vector<std::pair<std::size_t, double>> point_owner;   // (backend, dt)
+    std::vector<std::pair<std::size_t, double>> point_owner;   // (curve, dt)
+    const std::vector<SweepCurve> curves = sweepCurves(backends, o.vary);
+    std::vector<std::optional<RunTrace>> refs(backends.size());   // per backend, base settings
     Json results = Json::object();
     std::vector<std::vector<Json>> rows, robust_rows, detail_rows;
     ChartSpec speed{"speed-accuracy", "Speed vs accuracy (self-consistency, re-anchored windows); Pareto front dashed",
@@ -97,15 +100,18 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& backends
     ChartSpec conv{"convergence", "Error vs frame step", "frame step [s]", "mean window error [m]", true, true, {}};
     ChartSpec closed{"closed-form", "Closed-form error vs cost", "cost [s wall per s simulated]", "|measured - closed form|", true, true, {}};
     ChartSpec detail{"detail", "Model detail: error vs cost at the scene's step", "cost [s wall per s simulated]", "mean window error [m]", true, true, {}};
-    for (std::size_t bi = 0; bi < backends.size(); ++bi) {
-        const SelectedBackend& b = backends[bi];
-        const std::string& name = b.info->name;
-        if (o.progress) progressLine("sweep", name + ": reference run at dt " + stepName(ref_dt));
-        RunOptions ro;
-        ro.frame_dt = ref_dt;
-        ro.frames = framesFor(o.duration, dt_max) * plan.ref_per_coarse;
-        ro.record_every = plan.ref_per_coarse;
-        const RunTrace ref = runBackend(*b.info, scene, b.settings, ro);
+    for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+        const SelectedBackend& b = curves[ci].run;
+        const std::string& name = curves[ci].label;
+        if (!refs[curves[ci].backend]) {
+            if (o.progress) progressLine("sweep", b.info->name + ": reference run at dt " + stepName(ref_dt));
+            RunOptions ro;
+            ro.frame_dt = ref_dt;
+            ro.frames = framesFor(o.duration, dt_max) * plan.ref_per_coarse;
+            ro.record_every = plan.ref_per_coarse;
+            refs[curves[ci].backend] = runBackend(*b.info, scene, backends[curves[ci].backend].settings, ro);
+        }
+        const RunTrace& ref = *refs[curves[ci].backend];
         Json steps = Json::array();
         ChartSeries s_speed{name, "linespoints", {}, {}}, s_conv{name, "linespoints", {}, {}}, s_closed{name, "linespoints", {}, {}};
         for (double dt : robust_dts) {
@@ -124,7 +130,7 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& backends
             const double err = windowError(scene, b, ref, plan, dt, dt_max);
             const double cf = in.closed_form && run.finite ? std::abs(in.closed_form->measure(scene, run) - in.closed_form->expected) : NAN;
             points.push_back({timing.wall_per_sim_s, err});
-            point_owner.emplace_back(bi, dt);
+            point_owner.emplace_back(ci, dt);
             steps.push_back({{"dt_s", dt}, {"cost_wall_per_sim_s", timing.wall_per_sim_s}, {"window_error_m", number(err)},
                              {"closed_form_error", number(cf)}, {"robust", verdict.ok}, {"failure", verdict.reason},
                              {"step_p50_us", timing.p50_us}});
@@ -141,7 +147,8 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& backends
             robust_limit = *it;
         }
         const auto order = convergenceOrder(s_conv.x, s_conv.y);
-        results[name] = {{"steps", steps}, {"convergence_order", order ? Json(*order) : Json(nullptr)},
+        results[name] = {{"backend", b.info->name}, {"setting", curves[ci].setting.empty() ? Json(nullptr) : Json(curves[ci].setting)},
+                         {"steps", steps}, {"convergence_order", order ? Json(*order) : Json(nullptr)},
                          {"robustness_limit_dt_s", robust_limit ? Json(*robust_limit) : Json(nullptr)}};
         robust_rows.push_back({name, robust_limit ? Json(*robust_limit) : Json(nullptr),
                                robust_limit ? Json(stepName(*robust_limit)) : Json("none"), order ? Json(*order) : Json(nullptr)});
@@ -177,14 +184,15 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& backends
             detail.series.push_back(s_detail);
         }
     }
-    // Pareto front over every (backend, step) point.
+    // Pareto front over every (curve, step) point.
     const auto front = paretoFront(points);
     ChartSeries s_front{"Pareto front", "linespoints", {}, {}};
     Json front_json = Json::array();
     for (std::size_t i : front) {
         s_front.x.push_back(points[i].cost);
         s_front.y.push_back(points[i].error);
-        front_json.push_back({{"backend", backends[point_owner[i].first].info->name}, {"dt_s", point_owner[i].second},
+        const SweepCurve& c = curves[point_owner[i].first];
+        front_json.push_back({{"series", c.label}, {"backend", c.run.info->name}, {"dt_s", point_owner[i].second},
                               {"cost_wall_per_sim_s", points[i].cost}, {"window_error_m", points[i].error}});
     }
     speed.series.push_back(s_front);
@@ -192,11 +200,11 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& backends
     for (std::size_t i = 0; i < points.size(); ++i) {
         const bool on = std::find(front.begin(), front.end(), i) != front.end();
         const Json& step = [&]() -> const Json& {
-            for (const Json& s : results[backends[point_owner[i].first].info->name]["steps"])
+            for (const Json& s : results[curves[point_owner[i].first].label]["steps"])
                 if (s["dt_s"].get<double>() == point_owner[i].second) return s;
             return results;   // unreachable: every point has its step entry
         }();
-        rows.push_back({backends[point_owner[i].first].info->name, stepName(point_owner[i].second), point_owner[i].second,
+        rows.push_back({curves[point_owner[i].first].label, stepName(point_owner[i].second), point_owner[i].second,
                         step["cost_wall_per_sim_s"], step["window_error_m"], step["closed_form_error"],
                         step["robust"].get<bool>() ? "pass" : "FAIL", on});
     }

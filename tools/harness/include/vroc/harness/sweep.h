@@ -23,6 +23,7 @@ struct SweepOptions {
     double duration = 2.0;              ///< [s] of each run
     int windows = 10;                   ///< K re-anchored windows
     double window = 0.1;                ///< [s] Δ (rounded to a multiple of the largest step)
+    std::vector<std::string> vary;      ///< `--vary KEY=V1,V2,...`: one curve per value (sweep_curves.h)
     std::vector<DetailLevel> details;   ///< empty: no detail sweep
     std::optional<double> target;       ///< [m] target window error for --detail
     int robustness_extra = 2;           ///< also try 2x, 4x, ... the largest step for the limit
