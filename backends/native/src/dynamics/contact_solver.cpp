@@ -2,6 +2,7 @@
 #include "dynamics/contact_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 
@@ -12,6 +13,11 @@ namespace vroc::native {
 namespace {
 
 constexpr int kUnreached = 1 << 30;
+
+// The effective-mass terms depend only on the step's geometry and on which side is frozen, not on
+// the working velocities, so they are computed once per (constraint, freeze state) and reused by
+// every sweep. Same arithmetic as computing them afresh: the results are bit-identical.
+int freezeKey(bool freeze_a, bool freeze_b) { return (freeze_a ? 2 : 0) + (freeze_b ? 1 : 0); }
 
 // Working velocity of one body during the solve; inverse mass properties frozen for the step.
 struct WorkBody {
@@ -32,6 +38,8 @@ struct PointConstraint {
     double mu = 0.0;
     double lambda_n = 0.0;  // accumulated impulses (normal; tangential for a patch's friction)
     Eigen::Vector2d lambda_t = Eigen::Vector2d::Zero();
+    std::array<double, 4> kn_cache{};          // [1/kg] n.K.n per freeze state (see freezeKey)
+    std::array<bool, 4> kn_cached{};
 };
 
 Vec3 relativeVelocity(const std::vector<WorkBody>& wb, const PointConstraint& c) {
@@ -70,8 +78,13 @@ Mat3 pointMatrix(const WorkBody& a, const WorkBody& b, const PointConstraint& c,
 
 // One projected Gauss-Seidel update of a point's normal impulse (accumulated, clamped >= 0).
 void relaxNormal(std::vector<WorkBody>& wb, PointConstraint& c, bool freeze_a, bool freeze_b) {
-    const Mat3 k = pointMatrix(wb[c.a], wb[c.b], c, freeze_a, freeze_b);
-    const double kn = c.n.dot(k * c.n);
+    const int key = freezeKey(freeze_a, freeze_b);
+    if (!c.kn_cached[key]) {
+        const Mat3 k = pointMatrix(wb[c.a], wb[c.b], c, freeze_a, freeze_b);
+        c.kn_cache[key] = c.n.dot(k * c.n);
+        c.kn_cached[key] = true;
+    }
+    const double kn = c.kn_cache[key];
     if (!(kn > 0.0)) return;
     const double un = relativeVelocity(wb, c).dot(c.n);
     const double new_n = std::max(0.0, c.lambda_n + (c.target - un) / kn);
@@ -83,18 +96,29 @@ void relaxNormal(std::vector<WorkBody>& wb, PointConstraint& c, bool freeze_a, b
 // mu * (sum of the patch's normal impulses). One tangential impulse per patch, not per point: the
 // normal split over the polygon is statically indeterminate, and per-point friction would turn an
 // uneven split into a spurious yaw torque (a sliding box would turn off its heading).
+struct TangentMass {
+    Eigen::Matrix2d inverse = Eigen::Matrix2d::Zero();  // [kg] inverse tangential effective mass
+    bool valid = false;                                 // tangential block positive definite
+    bool cached = false;
+};
+
 void relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const std::vector<PointConstraint>& cs,
-                   int first, int count, bool freeze_a, bool freeze_b) {
+                   int first, int count, bool freeze_a, bool freeze_b, TangentMass& tm) {
     if (f.mu <= 0.0) return;
     double normal_sum = 0.0;
     for (int i = first; i < first + count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
-    const Mat3 k = pointMatrix(wb[f.a], wb[f.b], f, freeze_a, freeze_b);
+    if (!tm.cached) {
+        const Mat3 k = pointMatrix(wb[f.a], wb[f.b], f, freeze_a, freeze_b);
+        Eigen::Matrix2d kt;
+        kt << f.t1.dot(k * f.t1), f.t1.dot(k * f.t2), f.t2.dot(k * f.t1), f.t2.dot(k * f.t2);
+        tm.valid = kt.determinant() > 0.0;
+        if (tm.valid) tm.inverse = kt.inverse();
+        tm.cached = true;
+    }
+    if (!tm.valid) return;
     const Vec3 u = relativeVelocity(wb, f);
     const Eigen::Vector2d ut(u.dot(f.t1), u.dot(f.t2));
-    Eigen::Matrix2d kt;
-    kt << f.t1.dot(k * f.t1), f.t1.dot(k * f.t2), f.t2.dot(k * f.t1), f.t2.dot(k * f.t2);
-    if (!(kt.determinant() > 0.0)) return;
-    Eigen::Vector2d cand = f.lambda_t - kt.inverse() * ut;
+    Eigen::Vector2d cand = f.lambda_t - tm.inverse * ut;
     const double limit = f.mu * normal_sum;
     const double len = cand.norm();
     if (len > limit) cand *= (len > 0.0 ? limit / len : 0.0);
@@ -149,6 +173,10 @@ struct Patch {
     int first = 0, count = 0;
     double torsion_radius = 0.0;   // [m] (2/3) mean distance of the polygon from its centroid
     double lambda_torsion = 0.0;   // [N m s] accumulated torsional impulse about the normal
+    // Per freeze state (see freezeKey): the factorised normal block and the friction mass.
+    std::array<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>, 4> block;
+    std::array<bool, 4> block_cached{};
+    std::array<TangentMass, 4> tangent;
 };
 
 // Torsional (spin) friction of a polygon patch: a uniform pressure over a disc of radius a gives
@@ -177,17 +205,14 @@ void relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint>&
 // the system is singular and the pseudo-inverse picks the symmetric split). Point-by-point
 // Gauss-Seidel leaves an uneven split that rocks a resting box. Returns false (nothing applied) if
 // some accumulated impulse would turn negative: the caller then relaxes point by point.
-bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, const Patch& p,
-                      bool freeze_a, bool freeze_b) {
+void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointConstraint>& cs,
+                       Patch& p, bool freeze_a, bool freeze_b) {
     const int n = p.count;
-    if (n < 2 || n > 16) return false;
     const WorkBody& a = wb[p.friction.a];
     const WorkBody& b = wb[p.friction.b];
     Eigen::MatrixXd m(n, n);
-    Eigen::VectorXd rhs(n);
     for (int i = 0; i < n; ++i) {
         const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
-        rhs(i) = ci.target - relativeVelocity(wb, ci).dot(ci.n);
         for (int j = 0; j < n; ++j) {
             const PointConstraint& cj = cs[static_cast<std::size_t>(p.first + j)];
             Vec3 du = Vec3::Zero();   // relative velocity change at i per unit normal impulse at j
@@ -196,7 +221,24 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
             m(i, j) = ci.n.dot(du);
         }
     }
-    const Eigen::VectorXd x = m.completeOrthogonalDecomposition().solve(rhs);
+    p.block[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))].compute(m);
+}
+
+bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p,
+                      bool freeze_a, bool freeze_b) {
+    const int n = p.count;
+    if (n < 2 || n > 16) return false;
+    const auto key = static_cast<std::size_t>(freezeKey(freeze_a, freeze_b));
+    if (!p.block_cached[key]) {
+        factorNormalBlock(wb, cs, p, freeze_a, freeze_b);
+        p.block_cached[key] = true;
+    }
+    Eigen::VectorXd rhs(n);
+    for (int i = 0; i < n; ++i) {
+        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
+        rhs(i) = ci.target - relativeVelocity(wb, ci).dot(ci.n);
+    }
+    const Eigen::VectorXd x = p.block[key].solve(rhs);
     if (!x.allFinite()) return false;
     for (int i = 0; i < n; ++i)
         if (cs[static_cast<std::size_t>(p.first + i)].lambda_n + x(i) < 0.0) return false;
@@ -214,7 +256,8 @@ void relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Pat
         for (int i = p.first; i < p.first + p.count; ++i)
             relaxNormal(wb, cs[static_cast<std::size_t>(i)], freeze_a, freeze_b);
     }
-    relaxFriction(wb, p.friction, cs, p.first, p.count, freeze_a, freeze_b);
+    relaxFriction(wb, p.friction, cs, p.first, p.count, freeze_a, freeze_b,
+                  p.tangent[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))]);
     relaxTorsion(wb, cs, p, freeze_a, freeze_b);
 }
 
