@@ -177,15 +177,7 @@ void NativeBackend::syncBody(int body, double t) {
     const RigidBody saved = rb;
     advanceBallistic(rb, h, scene_.gravity);
     advanceTorqueFree(rb, h);
-    if (!rb.com.allFinite() || !rb.velocity.allFinite() || !rb.angular_momentum.allFinite() ||
-        !rb.orientation.coeffs().allFinite()) {
-        warn("nonfinite_state");
-        rb = saved;
-        rb.velocity.setZero();
-        rb.angular_momentum.setZero();
-        rb.refreshEnergy();
-        bumpVersion(body);
-    }
+    recoverIfNonFinite(body, saved);
 }
 
 NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
@@ -468,15 +460,7 @@ void NativeBackend::advanceBodies(const std::vector<BodyImpulse>& imp, double h,
             rb.refreshEnergy();
             bumpVersion(static_cast<int>(i));
         }
-        if (!rb.com.allFinite() || !rb.velocity.allFinite() || !rb.angular_momentum.allFinite() ||
-            !rb.orientation.coeffs().allFinite()) {
-            warn("nonfinite_state");
-            rb = saved;
-            rb.velocity.setZero();
-            rb.angular_momentum.setZero();
-            rb.refreshEnergy();
-            bumpVersion(static_cast<int>(i));
-        }
+        recoverIfNonFinite(static_cast<int>(i), saved);
     }
 }
 
@@ -506,6 +490,19 @@ void NativeBackend::emitEvents(const std::vector<PairSample>& samples,
         events_.push_back(e);
         ++stats_.collisions;
     }
+}
+
+void NativeBackend::recoverIfNonFinite(int body, const RigidBody& saved) {
+    RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
+    if (rb.com.allFinite() && rb.velocity.allFinite() && rb.angular_momentum.allFinite() &&
+        rb.orientation.coeffs().allFinite())
+        return;
+    warn("nonfinite_state");
+    rb = saved;
+    rb.velocity.setZero();
+    rb.angular_momentum.setZero();
+    rb.refreshEnergy();
+    bumpVersion(body);
 }
 
 }  // namespace vroc::native

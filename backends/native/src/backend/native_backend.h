@@ -96,6 +96,8 @@ private:
         box_dirty_[static_cast<std::size_t>(body)] = 1;
     }
     void warn(const char* kind, std::uint64_t n = 1) { warnings_[kind] += n; }
+    /// A body whose state went non-finite is put back to `saved`, at rest, and a warning counted.
+    void recoverIfNonFinite(int body, const RigidBody& saved);
 
     Scene scene_;
     NativeSettings settings_;
