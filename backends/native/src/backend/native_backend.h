@@ -1,16 +1,21 @@
 // SPDX-License-Identifier: MIT
-// NativeBackend: the paper's method made robust. Each frame is divided into internal steps; a step
-// never lets a pair close its gap below the target (conservative advancement on motion bounds),
-// so contacts are met at a separation in (0, collision_distance]. At each step start the touching
-// pairs get the collision phase (restitution, Coulomb friction), then the contact phase (e = 0 on
-// predicted velocities, shock propagation); bodies then fly exactly (docs/native-dynamics.md).
-// Bodies are advanced lazily: each keeps the time its state is valid at and is brought forward
-// only when a due pair, a contact or the frame end needs it (docs/native-dynamics.md, "Stepping").
+// NativeBackend: the paper's method made robust, with dense contact handled by islands.
+// A frame is a sequence of internal steps, each at the time of the next event:
+//   - a pair in flight (not touching) is queried when its earliest possible collision time comes
+//     (the CollisionQueue heap, conservative advancement on motion bounds); bodies fly exactly;
+//   - bodies joined by touching pairs form islands; an island is solved (collision phase, then the
+//     warm-started contact phase with split-impulse position correction) at its own ticks and when
+//     a contact appears in it; between ticks its bodies drift with the solved velocities.
+// An event in one island never shortens another island's step, and a body in free flight is never
+// stepped because something elsewhere touched (docs/native-scheduling.md, docs/native-dynamics.md).
+// The stages live in their own files: broad phase and pair sampling (pair_sampling.cpp), islands
+// (island_step.cpp), advance (body_motion.cpp); this file wires the frame.
 #pragma once
 
-#include <map>
-#include <unordered_map>
+#include <cstdint>
 #include <memory>
+#include <set>
+#include <unordered_map>
 #include <vector>
 
 #include "backend/body_shape.h"
@@ -18,8 +23,11 @@
 #include "backend/native_statistics.h"
 #include "dynamics/contact.h"
 #include "dynamics/contact_solver.h"
+#include "dynamics/persistent_manifold.h"
 #include "dynamics/rigid_body.h"
 #include "narrowphase/proximity.h"
+#include "scheduling/collision_queue.h"
+#include "scheduling/island_builder.h"
 #include "scheduling/motion_bound.h"
 #include "scheduling/pair_partition.h"
 #include "scheduling/sweep_and_prune.h"
@@ -42,15 +50,17 @@ public:
     Statistics statistics() const override { return stats_.report(); }
 
 private:
-    /// Persistent per body pair: feature caches and the queue key.
+    /// Persistent per body pair: feature caches, manifold caches and scheduling state.
     struct PairState {
         int a = -1, b = -1;
-        std::vector<FeatureCache> caches;    // parts(a) x parts(b), row-major
-        bool touching = false;               // at the start of the last step it was queried in
-        std::int64_t touching_step = -1;     // internal step index of that query
-        double safe_until = -1.0;            // [s] no contact possible before (queue key)
-        std::uint64_t version_a = 0, version_b = 0;   // body versions the key was computed with
-        bool placed_in_window = false;       // within the collision distance since its first query: resting, not refined (deferImpacts)
+        std::vector<FeatureCache> caches;              // parts(a) x parts(b), row-major
+        std::vector<PersistentManifold> manifolds;     // same indexing: warm-start impulses
+        bool touching = false;                         // at its last sample
+        bool sampled_once = false;
+        bool in_broad_phase = false;
+        std::int64_t broad_stamp = -1;                 // broad-phase update that last listed it
+        std::int64_t sampled_step = -1;                // internal step of the last sample
+        bool placed_in_window = false;   // within the collision distance since t = 0: resting (deferImpacts)
     };
     /// One step's narrow-phase answer for a pair.
     struct PairSample {
@@ -58,7 +68,8 @@ private:
         double distance = 0.0;
         Vec3 normal = Vec3::UnitZ();
         std::vector<ContactManifold> manifolds;
-        /// Every part pair's gap and normal: each bounds the step on its own (compounds).
+        std::vector<int> manifold_part;   ///< part-pair index of each manifold (its cache)
+        /// Every part pair's gap and normal: each bounds the pair's time on its own (compounds).
         struct PartGap {
             double distance;
             Vec3 normal;
@@ -66,34 +77,63 @@ private:
         std::vector<PartGap> parts;
         int queries = 0, walk_steps = 0, max_walk = 0, not_converged = 0;
         bool deferred = false;   ///< approaching impact moved to its refined touching time (deferImpacts)
+        double contact_time = 0.0;   ///< [s] deferred: when it is resolved (the refined touching time)
     };
 
-    double internalStep(double frame_start, double elapsed, double remaining, bool unbounded);
-    /// Recomputes the swept boxes of the bodies flagged in box_dirty_ (all when `all`) and, if
-    /// any changed, re-runs the sweep and prune and rebuilds candidates_.
-    void updateBroadPhase(bool all);
-    /// Brings body `body` from valid_at_[body] forward to time `t` [s] by exact free flight.
-    void syncBody(int body, double t);
+    // --- the step (native_backend.cpp) ---
+    double internalStep(double t, double remaining, bool unbounded);
+    /// [s] the earliest queue key or island tick, not before t.
+    double nextEventTime(double t);
+
+    // --- broad phase and pair sampling (pair_sampling.cpp) ---
+    /// Recomputes the swept boxes of the bodies flagged in box_dirty_ (all when `all`) and, if any
+    /// changed, re-runs the sweep and prune; pairs that entered are appended to `entered`.
+    void updateBroadPhase(bool all, std::vector<int>& entered);
     PairState& pairState(int a, int b);
+    /// Narrow phase of one pair at time t (its bodies must be valid at t). Pure in the pair.
     PairSample samplePair(int pair_index);
+    /// Samples the pairs (bodies brought to t first), in parallel above a few pairs.
+    std::vector<PairSample> samplePairs(const std::vector<int>& pairs, double t);
+    /// Counts the samples' narrow-phase statistics and warnings; repairs deep penetration.
+    void recordSamples(const std::vector<PairSample>& samples);
+    /// Flight pair bookkeeping after a sample: touching state, queue key (time of the earliest
+    /// possible contact), or the protection tick of a touching pair that the solve did not cover.
+    /// `solved`: the pair's manifolds went through this step's contact phase.
+    void scheduleSampled(const PairSample& s, double t, bool solved);
+    /// [s] the earliest island tick (cached; recomputed after ticks or the touching set changed).
+    double nextTick();
+    void setTick(int body, double time) {
+        tick_end_[static_cast<std::size_t>(body)] = time;
+        ticks_dirty_ = true;
+    }
+
+    // --- islands (island_step.cpp) ---
+    /// Solves the due islands at time t (those with a new contact among `samples` or whose tick
+    /// came): their touching pairs are sampled too, then the collision phase, the contact phase per
+    /// island and the drifts; every sample is then scheduled.
+    void solveIslands(std::vector<PairSample>& samples, double t);
     void collisionPhase(std::vector<ContactManifold>& manifolds);
-    MotionBound ballisticBound(int body) const;
-    MotionBound stepBound(int body, const BodyImpulse& imp, double h) const;
-    double contactBoundedStep(const std::vector<PairSample>& samples, const std::vector<BodyImpulse>& imp,
-                              double h) const;
-    void advanceBodies(const std::vector<BodyImpulse>& imp, double h, double t_next);
-    /// The contact phase on the bodies the manifolds touch only (others are not read: they may
-    /// lag behind in time). Fills imp_ for every body.
-    void solveContacts(std::vector<ContactManifold>& manifolds, double h, const ContactSolverSettings& solver);
-    void emitEvents(const std::vector<PairSample>& samples,
-                    const std::vector<ContactManifold>& manifolds, double t);
-    void separatePenetrating(const PairSample& s);
+    void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Impacts are resolved at touching, not at the window gap: shortens the step `h` [s] from `t` [s]
     /// to the refined contact time and clears those samples' manifolds (scheduling/impact_deferral.cpp).
     double deferImpacts(std::vector<PairSample>& samples, double t, double h);
+    void separatePenetrating(const PairSample& s);
+
+    // --- bodies (body_motion.cpp) ---
+    /// Brings body `body` from valid_at_[body] forward to time `t` [s]: drift until its tick end,
+    /// then exact free flight. A drift interrupted early (its island solved again) leaves the body
+    /// with the velocity of that instant, not of the tick end.
+    void syncBody(int body, double t);
+    /// Motion of the body from valid_at_ on, and the time [s] until which it holds.
+    MotionBound motionBound(int body, double& valid_until) const;
+    MotionBound ballisticBound(int body) const;
+    Aabb sweptBox(int body) const;
+    /// Starts a drift of `h` [s] at time t with the contact phase's impulses.
+    void startDrift(int body, const BodyImpulse& imp, double t, double h);
     void bumpVersion(int body) {
         ++versions_[static_cast<std::size_t>(body)];
         box_dirty_[static_cast<std::size_t>(body)] = 1;
+        changed_.push_back(body);
     }
     void warn(const char* kind, std::uint64_t n = 1) { warnings_[kind] += n; }
     /// A body whose state went non-finite is put back to `saved`, at rest, and a warning counted.
@@ -106,16 +146,28 @@ private:
     std::vector<std::uint64_t> versions_;   // bumped when a body's velocity changes outside flight
     std::vector<PairState> pairs_;
     std::unordered_map<std::uint64_t, int> pair_index_;   // key (a << 32) | b -> index into pairs_
+    std::vector<std::vector<int>> body_pairs_;            // per body: its broad-phase pairs
     std::vector<double> valid_at_;          // [s] per body: the time its state (com, q, v) is valid at
+    std::vector<double> drift_until_;       // [s] per body: end of its current drift (<= valid_at_: none)
+    std::vector<Vec3> drift_acceleration_;  // [m/s^2] per body: constant COM acceleration of the drift
+    std::vector<Vec3> drift_torque_;        // [N m] per body: constant torque of the drift (world)
+    std::vector<double> tick_end_;          // [s] per body: when its island is solved again (setTick)
+    double next_tick_ = 0.0;                // [s] cached minimum of tick_end_ over touching bodies
+    bool ticks_dirty_ = true;
     std::vector<std::uint8_t> box_dirty_;   // per body: its swept broad-phase box must be recomputed
+    std::vector<int> changed_;              // bodies whose version was bumped since last drained
     std::vector<int> candidates_;           // pairs_ indices of the current broad-phase pairs
-    std::vector<BodyImpulse> imp_;          // per body: contact-phase impulses of the current step
-    std::vector<int> imp_ids_;              // bodies whose imp_ entry may be set, ascending
+    std::set<int> touching_;                // pairs_ indices of touching pairs (sorted)
+    CollisionQueue queue_;                  // flight pairs by earliest possible contact time
+    IslandBuilder islands_;
+    std::vector<bool> is_static_;
     double frame_end_ = 0.0;                // [s] end time of the frame being stepped
+    double frame_dt_ = 0.0;                 // [s] its length
     SweepAndPrune broad_phase_;
     std::unique_ptr<PairPartition> partition_;
     double time_ = 0.0;
     std::int64_t step_index_ = 0;
+    std::int64_t broad_updates_ = 0;
     std::vector<CollisionEvent> events_;
     WarningCounts warnings_;
     NativeStatistics stats_;

@@ -17,6 +17,8 @@ struct NativeSettings {
     int collision_iterations = 5;           ///< collision-phase sweeps over touching pairs
     int contact_iterations = 20;            ///< contact-phase Gauss-Seidel sweeps
     int shock_iterations = 8;               ///< shock-propagation sweeps per level (0 = off)
+    int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
+    bool warm_start = true;                 ///< contact phase starts from the previous impulses
 
     static std::vector<SettingSpec> specs();
     static NativeSettings from(const Settings& settings);

@@ -18,12 +18,14 @@ struct NativeStatistics {
     std::int64_t walk_steps = 0;             ///< summed over queries
     std::int64_t max_walk_steps = 0;
     std::int64_t toi_limited_steps = 0;      ///< internal steps cut short by a pair's contact bound
-    std::int64_t step_solves = 0;            ///< contact-phase solves (>= 1 per internal step with contacts)
+    std::int64_t step_solves = 0;            ///< contact-phase solves, one per island solved
     std::int64_t queue_pops = 0;             ///< pairs taken from the collision queue for a query
     std::int64_t queue_skips = 0;            ///< broad-phase pairs left untouched (their time had not come)
     std::int64_t collisions = 0;             ///< collision events
     std::int64_t contacts = 0;               ///< touching part pairs, summed over internal steps
     std::int64_t contact_points = 0;         ///< contact-phase points, summed over internal steps
+    std::int64_t position_corrections = 0;   ///< patches the split-impulse pass pushed back to the window
+    std::int64_t max_island_bodies = 0;      ///< bodies (static ones included) of the largest island solved
 
     Statistics report() const {
         Statistics s;
@@ -45,6 +47,8 @@ struct NativeStatistics {
         s["collisions"] = static_cast<double>(collisions);
         s["contacts"] = static_cast<double>(contacts);
         s["contact_points"] = static_cast<double>(contact_points);
+        s["position_corrections"] = static_cast<double>(position_corrections);
+        s["max_island_bodies"] = static_cast<double>(max_island_bodies);
         return s;
     }
 };

@@ -20,6 +20,12 @@ struct ContactManifold {
     double friction = 0.0;            ///< [-] combined (geometric mean)
     double collision_impulse = 0.0;   ///< [N s] normal impulse of the collision phase (output)
     double contact_impulse = 0.0;     ///< [N s] normal impulse of the contact phase (output)
+
+    // Warm start (persistent manifolds, docs/native-dynamics.md): the previous solve's accumulated
+    // impulses, carried over by the pair's manifold cache. Input to the contact phase, then its output.
+    std::vector<double> point_impulse;   ///< [N s] per point of `points` (empty: cold start)
+    Vec3 tangent_impulse = Vec3::Zero(); ///< [N s] patch friction impulse, world
+    double torsion_impulse = 0.0;        ///< [N m s] patch spin friction impulse about the normal
 };
 
 }  // namespace vroc::native

@@ -35,6 +35,7 @@ struct PointConstraint {
     Vec3 ra, rb;            // contact point - COM, world
     Vec3 n, t1, t2;         // normal A->B and tangent basis
     double target = 0.0;    // [m/s] lower bound on the final normal relative velocity
+    double start_speed = 0.0;   // [m/s] normal relative velocity at the step start
     double mu = 0.0;
     double lambda_n = 0.0;  // accumulated impulses (normal; tangential for a patch's friction)
     Eigen::Vector2d lambda_t = Eigen::Vector2d::Zero();
@@ -174,7 +175,9 @@ struct Patch {
     double torsion_radius = 0.0;   // [m] (2/3) mean distance of the polygon from its centroid
     double lambda_torsion = 0.0;   // [N m s] accumulated torsional impulse about the normal
     // Per freeze state (see freezeKey): the factorised normal block and the friction mass.
-    std::array<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>, 4> block;
+    // The minimum-norm inverse of the normal block (manifolds keep <= 4 points): fixed size, so a
+    // relaxation is one small product and allocates nothing.
+    std::array<Eigen::Matrix4d, 4> block;
     std::array<bool, 4> block_cached{};
     std::array<TangentMass, 4> tangent;
 };
@@ -210,7 +213,7 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
     const int n = p.count;
     const WorkBody& a = wb[p.friction.a];
     const WorkBody& b = wb[p.friction.b];
-    Eigen::MatrixXd m(n, n);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> m(n, n);
     for (int i = 0; i < n; ++i) {
         const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
         for (int j = 0; j < n; ++j) {
@@ -221,24 +224,26 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
             m(i, j) = ci.n.dot(du);
         }
     }
-    p.block[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))].compute(m);
+    Eigen::Matrix4d& inv = p.block[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))];
+    inv.setZero();
+    inv.topLeftCorner(n, n) = Eigen::CompleteOrthogonalDecomposition<decltype(m)>(m).pseudoInverse();
 }
 
 bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p,
                       bool freeze_a, bool freeze_b) {
     const int n = p.count;
-    if (n < 2 || n > 16) return false;
+    if (n < 2 || n > 4) return false;
     const auto key = static_cast<std::size_t>(freezeKey(freeze_a, freeze_b));
     if (!p.block_cached[key]) {
         factorNormalBlock(wb, cs, p, freeze_a, freeze_b);
         p.block_cached[key] = true;
     }
-    Eigen::VectorXd rhs(n);
+    Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
     for (int i = 0; i < n; ++i) {
         const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
         rhs(i) = ci.target - relativeVelocity(wb, ci).dot(ci.n);
     }
-    const Eigen::VectorXd x = p.block[key].solve(rhs);
+    const Eigen::Vector4d x = p.block[key] * rhs;
     if (!x.allFinite()) return false;
     for (int i = 0; i < n; ++i)
         if (cs[static_cast<std::size_t>(p.first + i)].lambda_n + x(i) < 0.0) return false;
@@ -264,20 +269,111 @@ void relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Pat
 void shockPropagation(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs,
                       std::vector<Patch>& patches, int sweeps) {
     // Bodies not connected to a static one keep level kUnreached: the Gauss-Seidel result stands.
-    int max_level = 0;
-    for (const auto& c : cs) {
-        for (int l : {wb[c.a].level, wb[c.b].level})
-            if (l < kUnreached) max_level = std::max(max_level, l);
+    // Patches are bucketed by level once (a level's sweeps touch only its own patches).
+    std::vector<std::vector<Patch*>> by_level;
+    for (auto& p : patches) {
+        const int level = std::max(wb[p.friction.a].level, wb[p.friction.b].level);
+        if (level >= kUnreached || level < 1) continue;
+        if (by_level.size() <= static_cast<std::size_t>(level)) by_level.resize(static_cast<std::size_t>(level) + 1);
+        by_level[static_cast<std::size_t>(level)].push_back(&p);
     }
-    for (int level = 1; level <= max_level; ++level) {
+    for (std::size_t level = 1; level < by_level.size(); ++level) {
         for (int s = 0; s < sweeps; ++s) {
-            for (auto& p : patches) {
-                const int la = wb[p.friction.a].level, lb = wb[p.friction.b].level;
-                if (std::max(la, lb) != level) continue;
-                relaxPatch(wb, cs, p, la < level, lb < level);
+            for (Patch* p : by_level[level]) {
+                const int la = wb[p->friction.a].level, lb = wb[p->friction.b].level;
+                relaxPatch(wb, cs, *p, la < static_cast<int>(level), lb < static_cast<int>(level));
             }
         }
     }
+}
+
+// Applies the previous solve's accumulated impulses (same points, same order when the pair's
+// manifold cache matched them) so the sweeps start near the answer. Friction and spin impulses
+// are clipped to the new cone: the warm start never exceeds what Coulomb allows now.
+void warmStart(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, std::vector<Patch>& patches,
+               const std::vector<ContactManifold>& manifolds) {
+    for (Patch& p : patches) {
+        const ContactManifold& mf = manifolds[static_cast<std::size_t>(p.friction.manifold)];
+        if (mf.point_impulse.size() != static_cast<std::size_t>(p.count)) continue;
+        double normal_sum = 0.0;
+        for (int i = 0; i < p.count; ++i) {
+            PointConstraint& c = cs[static_cast<std::size_t>(p.first + i)];
+            c.lambda_n = std::max(0.0, mf.point_impulse[static_cast<std::size_t>(i)]);
+            normal_sum += c.lambda_n;
+            applyPair(wb, c, c.lambda_n * c.n, false, false);
+        }
+        PointConstraint& f = p.friction;
+        Eigen::Vector2d lt(mf.tangent_impulse.dot(f.t1), mf.tangent_impulse.dot(f.t2));
+        const double limit = f.mu * normal_sum;
+        if (lt.norm() > limit) lt *= (lt.norm() > 0.0 ? limit / lt.norm() : 0.0);
+        f.lambda_t = lt;
+        applyPair(wb, f, lt(0) * f.t1 + lt(1) * f.t2, false, false);
+        if (p.torsion_radius > 0.0) {
+            const double tl = f.mu * normal_sum * p.torsion_radius;
+            p.lambda_torsion = std::clamp(mf.torsion_impulse, -tl, tl);
+            wb[f.a].w -= wb[f.a].inv_inertia * (p.lambda_torsion * f.n);
+            wb[f.b].w += wb[f.b].inv_inertia * (p.lambda_torsion * f.n);
+        }
+    }
+}
+
+// Split impulse: pseudo-velocities, separate from the real ones, push patches whose gap would end
+// the step below the floor back towards the target gap; the result is a displacement per body.
+// One constraint per patch at its centroid.
+int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies,
+                 const std::vector<Patch>& patches, const std::vector<ContactManifold>& manifolds, double h,
+                 const ContactSolverSettings& settings, std::vector<BodyImpulse>& impulses) {
+    if (settings.correction_iterations <= 0 || !(h > 0.0)) return 0;
+    std::vector<PointConstraint> centroids;
+    for (const Patch& p : patches) centroids.push_back(p.friction);
+    assignLevels(wb, bodies, centroids);
+    struct Push {
+        const PointConstraint* c;
+        double target;   // [m/s] pseudo normal speed wanted
+        double k;        // [1/kg] effective mass inverse
+        int level;       // shock level of the patch (max of its bodies')
+        bool freeze_a, freeze_b;
+        double lambda = 0.0;
+    };
+    // Every patch takes part (pseudo normal speed >= rate x (target - reached) / h, which is
+    // negative for a gap above the target): a push never drives a body into a neighbour beyond
+    // that neighbour's gap. Nothing runs unless some patch ends below the floor.
+    std::vector<Push> pushes;
+    int below = 0;
+    for (const Patch& p : patches) {
+        const ContactManifold& mf = manifolds[static_cast<std::size_t>(p.friction.manifold)];
+        // The gap reached by the step end (bodies move with the mean of start and solved velocity).
+        const double un_end = relativeVelocity(wb, p.friction).dot(p.friction.n);
+        const double reached = mf.distance + 0.5 * (p.friction.start_speed + un_end) * h;
+        if (reached < settings.correction_floor) ++below;
+        // Shock propagation for positions: the body nearer the static ground (lower level) is
+        // frozen, so a push lifts the upper body and never drives the lower one into the floor.
+        const int la = wb[p.friction.a].level, lb = wb[p.friction.b].level;
+        const bool freeze_a = la < lb, freeze_b = lb < la;
+        const double k = (freeze_a ? 0.0 : wb[p.friction.a].inv_mass) + (freeze_b ? 0.0 : wb[p.friction.b].inv_mass);
+        if (!(k > 0.0)) continue;
+        pushes.push_back({&p.friction, settings.correction_rate * (settings.correction_target - reached) / h, k,
+                          std::max(la, lb), freeze_a, freeze_b});
+    }
+    if (below == 0) return 0;
+    std::stable_sort(pushes.begin(), pushes.end(), [](const Push& x, const Push& y) { return x.level < y.level; });
+    // Translation only: a push at a patch centroid away from the COM would otherwise tip the body
+    // and let its far edge dig into the next body (the pseudo inertia is infinite).
+    std::vector<WorkBody> pv(wb.size());
+    for (std::size_t i = 0; i < wb.size(); ++i) pv[i].inv_mass = wb[i].inv_mass;
+    for (int it = 0; it < settings.correction_iterations; ++it) {
+        for (Push& p : pushes) {
+            const double un = relativeVelocity(pv, *p.c).dot(p.c->n);
+            const double next = std::max(0.0, p.lambda + (p.target - un) / p.k);
+            applyPair(pv, *p.c, (next - p.lambda) * p.c->n, p.freeze_a, p.freeze_b);
+            p.lambda = next;
+        }
+    }
+    for (std::size_t i = 0; i < wb.size(); ++i) {
+        if (bodies[i].is_static) continue;
+        impulses[i].displacement = pv[i].v * h;
+    }
+    return below;
 }
 
 }  // namespace
@@ -313,7 +409,8 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         c.t1 = c.n.unitOrthogonal();
         c.t2 = c.n.cross(c.t1);
         c.mu = mf.friction;
-        c.target = -std::max(0.0, relativeVelocity(wb, c).dot(c.n));
+        c.start_speed = relativeVelocity(wb, c).dot(c.n);
+        c.target = -std::max(0.0, c.start_speed);
         return c;
     };
     for (std::size_t m = 0; m < manifolds.size(); ++m) {
@@ -337,6 +434,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         if (!bodies[i].is_static) wb[i].v += gravity * h;
     }
     const std::vector<WorkBody> predicted = wb;
+    if (settings.warm_start && !single_point) warmStart(wb, cs, patches, manifolds);
     if (single_point) {
         for (int it = 0; it < settings.iterations; ++it) {
             for (auto& c : cs) relaxPlastic(wb, c, report.ill_conditioned);
@@ -352,19 +450,33 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     }
     // Impulses per body, recovered from the velocity change (covers every pass above).
     impulses.assign(bodies.size(), BodyImpulse{});
+    report.corrected_patches = positionPass(wb, bodies, patches, manifolds, h, settings, impulses);
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& rb = bodies[i];
         if (rb.is_static) continue;
         const Vec3 dv = wb[i].v - predicted[i].v;
         const Vec3 dw = wb[i].w - predicted[i].w;
-        if (dv.isZero(0.0) && dw.isZero(0.0)) continue;
+        if (dv.isZero(0.0) && dw.isZero(0.0) && impulses[i].displacement.isZero(0.0) &&
+            impulses[i].rotation.isZero(0.0))
+            continue;
         impulses[i].linear = dv / rb.inv_mass;
         const Mat3 r = rb.rotation();
         impulses[i].angular = r * rb.inertia_body * r.transpose() * dw;
         impulses[i].supported = true;
     }
-    for (auto& mf : manifolds) mf.contact_impulse = 0.0;
-    for (const auto& c : cs) manifolds[c.manifold].contact_impulse += c.lambda_n;
+    for (auto& mf : manifolds) {
+        mf.contact_impulse = 0.0;
+        mf.point_impulse.clear();
+    }
+    for (const auto& c : cs) {
+        manifolds[c.manifold].contact_impulse += c.lambda_n;
+        manifolds[c.manifold].point_impulse.push_back(c.lambda_n);
+    }
+    for (const Patch& p : patches) {
+        ContactManifold& mf = manifolds[static_cast<std::size_t>(p.friction.manifold)];
+        mf.tangent_impulse = p.friction.lambda_t(0) * p.friction.t1 + p.friction.lambda_t(1) * p.friction.t2;
+        mf.torsion_impulse = p.lambda_torsion;
+    }
     return report;
 }
 

@@ -44,8 +44,8 @@ double NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, d
         // contact from the start, as the collision distance defines; it stays so until it leaves
         // the window (a step without a manifold, or not queried at the previous step). A pair
         // first queried later (its broad-phase boxes just met) has flown in: it is not resting.
-        if (ps.touching_step < 0) ps.placed_in_window = t <= 0.0 && !s.manifolds.empty();
-        else if (s.manifolds.empty() || ps.touching_step != step_index_ - 1) ps.placed_in_window = false;
+        if (!ps.sampled_once) ps.placed_in_window = t <= 0.0 && !s.manifolds.empty();
+        else if (s.manifolds.empty() || !ps.touching) ps.placed_in_window = false;
         if (s.manifolds.empty() || ps.placed_in_window) continue;
         if (!freeBody(ps.a) || !freeBody(ps.b)) continue;
         if (!sphereOnStatic(ps.a, ps.b) && !sphereOnStatic(ps.b, ps.a)) continue;
@@ -67,8 +67,9 @@ double NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, d
         if (r.state == RefineState::Failed) continue;
         // Clear: no touching within this step (its horizon may be a rounding sliver of a frame):
         // the sphere just flies on. Otherwise the step ends at the refined time.
-        if (r.state != RefineState::Clear) h = std::min(h, r.time - t);
+        s.contact_time = r.state == RefineState::Clear ? t + h : r.time;
         s.manifolds.clear();
+        s.manifold_part.clear();
         s.deferred = true;
     }
     return h;

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+// How bodies move between events. A body is valid at its own time (valid_at_) and brought forward
+// lazily, only when a pair, an island or the frame end needs it. Two kinds of motion:
+//   - free flight: gravity in closed form, torque-free rotation (exact);
+//   - drift: after its island's contact phase, until the island's next tick, gravity and the contact
+//     impulses act as constant force and torque over the tick (impulse / tick length): the COM flies
+//     a parabola that ends the tick at the solved velocity, having moved with the mean of the start
+//     and end velocities (exactly the ballistic path when no impulse acted). An island solved again
+//     before its tick ends takes the state of that instant.
+#include <algorithm>
+
+#include "backend/native_backend.h"
+#include "dynamics/free_flight.h"
+#include "scheduling/collision_time_bound.h"
+
+namespace vroc::native {
+
+void NativeBackend::syncBody(int body, double t) {
+    const std::size_t i = static_cast<std::size_t>(body);
+    if (!(valid_at_[i] < t)) return;
+    double from = valid_at_[i];
+    valid_at_[i] = t;
+    RigidBody& rb = bodies_[i];
+    if (rb.is_static) return;
+    const RigidBody saved = rb;
+    if (drift_until_[i] > from) {
+        const double tau = std::min(t, drift_until_[i]) - from;
+        const Vec3& a = drift_acceleration_[i];
+        rb.com += rb.velocity * tau + (0.5 * tau * tau) * a;
+        rb.velocity += a * tau;
+        // The torque's impulse half before and half after the rotation (symmetric in time).
+        rb.angular_momentum += (0.5 * tau) * drift_torque_[i];
+        rb.refreshEnergy();
+        advanceTorqueFree(rb, tau);
+        rb.angular_momentum += (0.5 * tau) * drift_torque_[i];
+        rb.refreshEnergy();
+        from += tau;
+    }
+    if (t > from) {
+        advanceBallistic(rb, t - from, scene_.gravity);
+        advanceTorqueFree(rb, t - from);
+    }
+    recoverIfNonFinite(body, saved);
+}
+
+MotionBound NativeBackend::ballisticBound(int body) const {
+    const RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
+    if (rb.is_static) return MotionBound::stationary();
+    MotionBound m;
+    m.velocity = rb.velocity;
+    m.acceleration = scene_.gravity;
+    m.angular_speed = rb.maxAngularSpeed();
+    m.outer_radius = shapes_[static_cast<std::size_t>(body)].outer_radius;
+    m.inner_radius = shapes_[static_cast<std::size_t>(body)].inner_radius;
+    return m;
+}
+
+MotionBound NativeBackend::motionBound(int body, double& valid_until) const {
+    const std::size_t i = static_cast<std::size_t>(body);
+    valid_until = kNever;
+    MotionBound m = ballisticBound(body);
+    const RigidBody& rb = bodies_[i];
+    if (rb.is_static || !(drift_until_[i] > valid_at_[i])) return m;
+    valid_until = drift_until_[i];
+    m.acceleration = drift_acceleration_[i];
+    // |L| grows by at most |torque| t over the drift: |omega| is bounded by its largest value.
+    if (rb.smallest_moment > 0.0)
+        m.angular_speed = (rb.angular_momentum.norm() + drift_torque_[i].norm() * (drift_until_[i] - valid_at_[i])) /
+                          rb.smallest_moment;
+    return m;
+}
+
+Aabb NativeBackend::sweptBox(int body) const {
+    const std::size_t i = static_cast<std::size_t>(body);
+    const RigidBody& rb = bodies_[i];
+    const double r = shapes_[i].outer_radius;
+    const Aabb now{rb.com - Vec3::Constant(r), rb.com + Vec3::Constant(r)};
+    double until = kNever;
+    const MotionBound m = motionBound(body, until);
+    if (!(until < kNever)) return m.sweptAabb(now, std::max(0.0, frame_end_ - valid_at_[i])).inflated(scene_.collision_distance);
+    // Drifting: the drift, then free flight to the frame end.
+    const double tau = std::max(0.0, std::min(until, frame_end_) - valid_at_[i]);
+    Aabb box = m.sweptAabb(now, tau);
+    const double rest = frame_end_ - until;
+    if (rest > 0.0) {
+        const Vec3 c = rb.com + rb.velocity * tau + (0.5 * tau * tau) * drift_acceleration_[i];
+        MotionBound after = ballisticBound(body);
+        after.velocity = rb.velocity + drift_acceleration_[i] * tau;
+        after.angular_speed = m.angular_speed;
+        const Aabb later = after.sweptAabb({c - Vec3::Constant(r), c + Vec3::Constant(r)}, rest);
+        box.lower = box.lower.cwiseMin(later.lower);
+        box.upper = box.upper.cwiseMax(later.upper);
+    }
+    return box.inflated(scene_.collision_distance);
+}
+
+void NativeBackend::startDrift(int body, const BodyImpulse& imp, double t, double h) {
+    const std::size_t i = static_cast<std::size_t>(body);
+    RigidBody& rb = bodies_[i];
+    if (rb.is_static || !(h > 0.0)) return;
+    const RigidBody saved = rb;
+    // Split-impulse position correction: applied to the pose, never to the velocities.
+    rb.com += imp.displacement;
+    drift_acceleration_[i] = scene_.gravity + (rb.inv_mass / h) * imp.linear;
+    drift_torque_[i] = imp.angular / h;
+    valid_at_[i] = t;
+    drift_until_[i] = t + h;
+    bumpVersion(body);
+    recoverIfNonFinite(body, saved);
+}
+
+}  // namespace vroc::native

@@ -1,0 +1,289 @@
+// SPDX-License-Identifier: MIT
+// Islands of the native step: bodies joined by touching pairs are solved together, at their
+// island's tick or when a contact appears in it, and nowhere else (docs/native-dynamics.md).
+#include <algorithm>
+#include <map>
+#include <cstdio>
+#include <cstdlib>
+
+#include "backend/native_backend.h"
+#include "dynamics/newton_coulomb.h"
+#include "dynamics/vroc1995_impulse.h"
+
+namespace vroc::native {
+namespace {
+
+// A point of a new manifold takes the warm-start impulse of a cached point closer than this
+// fraction of the smaller body's outer radius (in A's frame).
+constexpr double kMatchFraction = 0.05;
+
+// One island's contact phase, computed on local copies (so islands can run on any worker).
+struct IslandSolve {
+    std::vector<int> bodies;              // ascending global indices
+    std::vector<int> manifolds;           // indices into the step's manifold list
+    std::vector<BodyImpulse> impulses;    // per local body
+    std::vector<ContactManifold> solved;  // per local manifold, with outputs
+    ContactSolverReport report;
+};
+
+}  // namespace
+
+void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
+    // Most steps only move pairs in flight along: no new contact and no island tick due.
+    const bool new_contact = std::any_of(samples.begin(), samples.end(), [](const PairSample& s) { return !s.manifolds.empty(); });
+    if (!new_contact && nextTick() > t) {
+        recordSamples(samples);
+        for (const PairSample& s : samples) scheduleSampled(s, t, false);
+        return;
+    }
+    const double cd = scene_.collision_distance;
+    // Islands: the touching pairs known so far and the contacts this step found.
+    islands_.reset(is_static_);
+    for (int p : touching_) islands_.join(pairs_[static_cast<std::size_t>(p)].a, pairs_[static_cast<std::size_t>(p)].b);
+    for (const PairSample& s : samples)
+        if (!s.manifolds.empty()) islands_.join(pairs_[static_cast<std::size_t>(s.pair)].a, pairs_[static_cast<std::size_t>(s.pair)].b);
+    std::vector<std::uint8_t> due_root(bodies_.size(), 0);
+    bool any_due = false;
+    auto markDue = [&](int body) {
+        const int root = islands_.islandOf(body);
+        if (root >= 0) {
+            due_root[static_cast<std::size_t>(root)] = 1;
+            any_due = true;
+        }
+    };
+    for (int p : touching_) {
+        const PairState& ps = pairs_[static_cast<std::size_t>(p)];
+        for (int body : {ps.a, ps.b})
+            if (!is_static_[static_cast<std::size_t>(body)] && tick_end_[static_cast<std::size_t>(body)] <= t) markDue(body);
+    }
+    for (const PairSample& s : samples) {
+        if (s.manifolds.empty()) continue;
+        markDue(pairs_[static_cast<std::size_t>(s.pair)].a);
+        markDue(pairs_[static_cast<std::size_t>(s.pair)].b);
+    }
+    auto islandOfPair = [&](int p) {
+        const PairState& ps = pairs_[static_cast<std::size_t>(p)];
+        return islands_.islandOf(is_static_[static_cast<std::size_t>(ps.a)] ? ps.b : ps.a);
+    };
+    // The due islands' touching pairs are refreshed from their cached features.
+    if (any_due) {
+        std::vector<int> more;
+        for (int p : touching_)
+            if (pairs_[static_cast<std::size_t>(p)].sampled_step != step_index_ && due_root[static_cast<std::size_t>(islandOfPair(p))])
+                more.push_back(p);
+        std::vector<PairSample> extra = samplePairs(more, t);
+        samples.insert(samples.end(), std::make_move_iterator(extra.begin()), std::make_move_iterator(extra.end()));
+        std::sort(samples.begin(), samples.end(), [](const PairSample& x, const PairSample& y) { return x.pair < y.pair; });
+    }
+    recordSamples(samples);
+    deferImpacts(samples, t, frame_end_ - t);
+
+    // Manifolds of the due islands, warm started from their pairs' caches.
+    // The island's tick: a fixed fraction of the frame. It may run past the frame end (the bodies
+    // are then reported mid-drift): an impact just before a frame end does not cost a sliver solve.
+    const double h = frame_dt_ / static_cast<double>(settings_.contact_substeps);
+    std::vector<ContactManifold> manifolds;
+    std::vector<std::pair<int, int>> cache_of;   // (pair, part pair) per manifold
+    for (const PairSample& s : samples) {
+        PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        const Pose fa = bodies_[static_cast<std::size_t>(ps.a)].framePose();
+        const double radius = std::min(shapes_[static_cast<std::size_t>(ps.a)].outer_radius,
+                                       shapes_[static_cast<std::size_t>(ps.b)].outer_radius);
+        for (std::size_t k = 0; k < s.manifolds.size(); ++k) {
+            ContactManifold m = s.manifolds[k];
+            if (settings_.warm_start)
+                warmStartManifold(ps.manifolds[static_cast<std::size_t>(s.manifold_part[k])], fa, h,
+                                  kMatchFraction * radius, m);
+            manifolds.push_back(std::move(m));
+            cache_of.emplace_back(s.pair, s.manifold_part[k]);
+        }
+    }
+    stats_.contacts += static_cast<std::int64_t>(manifolds.size());
+    collisionPhase(manifolds);
+
+    // Contact phase, one solve per island (islands are independent: any worker, same bits).
+    std::map<int, IslandSolve> by_root;
+    for (std::size_t m = 0; m < manifolds.size(); ++m) {
+        IslandSolve& is = by_root[islandOfPair(manifolds[m].pair)];
+        is.manifolds.push_back(static_cast<int>(m));
+        is.bodies.push_back(manifolds[m].body_a);
+        is.bodies.push_back(manifolds[m].body_b);
+    }
+    std::vector<IslandSolve*> work;
+    for (auto& [root, is] : by_root) {
+        std::sort(is.bodies.begin(), is.bodies.end());
+        is.bodies.erase(std::unique(is.bodies.begin(), is.bodies.end()), is.bodies.end());
+        work.push_back(&is);
+    }
+    ContactSolverSettings solver;
+    solver.model = settings_.response;
+    solver.iterations = settings_.contact_iterations;
+    solver.shock_iterations = settings_.shock_iterations;
+    solver.warm_start = settings_.warm_start;
+    solver.correction_floor = 0.25 * cd;
+    solver.correction_target = 0.5 * cd;
+    auto solveOne = [&](IslandSolve& is) {
+        std::vector<RigidBody> local;
+        local.reserve(is.bodies.size());
+        for (int id : is.bodies) local.push_back(bodies_[static_cast<std::size_t>(id)]);
+        auto localOf = [&](int id) {
+            return static_cast<int>(std::lower_bound(is.bodies.begin(), is.bodies.end(), id) - is.bodies.begin());
+        };
+        for (int m : is.manifolds) {
+            ContactManifold lm = manifolds[static_cast<std::size_t>(m)];
+            lm.body_a = localOf(lm.body_a);
+            lm.body_b = localOf(lm.body_b);
+            is.solved.push_back(std::move(lm));
+        }
+        is.report = solveContactPhase(local, is.solved, h, scene_.gravity, solver, is.impulses);
+    };
+    if (work.size() > 1 && manifolds.size() >= 16)
+        partition_->run(work.size(), [&](std::size_t k, int) { solveOne(*work[k]); });
+    else
+        for (IslandSolve* is : work) solveOne(*is);
+
+    // Results in island order: impulses become drifts, manifolds go back to their caches.
+    for (IslandSolve* is : work) {
+        ++stats_.step_solves;
+        stats_.contact_points += is->report.points;
+        stats_.position_corrections += is->report.corrected_patches;
+        stats_.max_island_bodies = std::max<std::int64_t>(stats_.max_island_bodies, static_cast<std::int64_t>(is->bodies.size()));
+        if (is->report.ill_conditioned > 0) warn("ill_conditioned_solve", static_cast<std::uint64_t>(is->report.ill_conditioned));
+        for (std::size_t k = 0; k < is->manifolds.size(); ++k) {
+            const int m = is->manifolds[k];
+            ContactManifold& out = manifolds[static_cast<std::size_t>(m)];
+            const ContactManifold& lm = is->solved[k];
+            out.contact_impulse = lm.contact_impulse;
+            out.point_impulse = lm.point_impulse;
+            out.tangent_impulse = lm.tangent_impulse;
+            out.torsion_impulse = lm.torsion_impulse;
+            const auto [pair, part] = cache_of[static_cast<std::size_t>(m)];
+            PairState& ps = pairs_[static_cast<std::size_t>(pair)];
+            storeManifold(ps.manifolds[static_cast<std::size_t>(part)], bodies_[static_cast<std::size_t>(ps.a)].framePose(), h, out);
+        }
+        for (std::size_t k = 0; k < is->bodies.size(); ++k) {
+            const int body = is->bodies[k];
+            if (is_static_[static_cast<std::size_t>(body)]) continue;
+            if (std::getenv("VROC_DEBUG") && is->impulses[k].linear.norm() * bodies_[body].inv_mass > 20.0) {
+                std::fprintf(stderr, "BIGSOLVE t=%.6f body %d dv=%.3g h=%.3g island bodies=%zu manifolds=%zu\n", t, body, is->impulses[k].linear.norm() * bodies_[body].inv_mass, h, is->bodies.size(), is->manifolds.size());
+                for (int m : is->manifolds) { const auto& mf = manifolds[m]; std::fprintf(stderr, "   m %d-%d d=%.4g n=(%.3f %.3f %.3f) pts=%zu coll=%.3g cont=%.3g\n", mf.body_a, mf.body_b, mf.distance, mf.normal.x(), mf.normal.y(), mf.normal.z(), mf.points.size(), mf.collision_impulse, mf.contact_impulse); for (auto& q : mf.points) std::fprintf(stderr, "      p (%.4f %.4f %.4f)\n", q.x(), q.y(), q.z()); }
+            }
+            if (is->impulses[k].supported) {
+                startDrift(body, is->impulses[k], t, h);
+            } else if (drift_until_[static_cast<std::size_t>(body)] > t) {
+                drift_until_[static_cast<std::size_t>(body)] = t;   // the old contact force is gone
+                bumpVersion(body);
+            }
+            setTick(body, t + h);
+        }
+    }
+    if (std::getenv("VROC_DEBUG")) {
+        for (IslandSolve* is : work) {
+            double vmax = 0; int arg = -1;
+            for (int b : is->bodies) if (!is_static_[b] && bodies_[b].velocity.norm() > vmax) { vmax = bodies_[b].velocity.norm(); arg = b; }
+            double dmin = 1; for (int m : is->manifolds) dmin = std::min(dmin, manifolds[m].distance);
+            std::fprintf(stderr, "SOLVE t=%.6f h=%.6f bodies=%zu manifolds=%zu points=%d vmax=%.4g (body %d) dmin=%.3g corrected=%d\n", t, h, is->bodies.size(), is->manifolds.size(), is->report.points, vmax, arg, dmin, is->report.corrected_patches);
+        }
+    }
+    // Per-sample totals for the events.
+    {
+        std::size_t m = 0;
+        for (PairSample& s : samples)
+            for (ContactManifold& sm : s.manifolds) {
+                sm.collision_impulse = manifolds[m].collision_impulse;
+                sm.contact_impulse = manifolds[m].contact_impulse;
+                ++m;
+            }
+    }
+    emitEvents(samples, t);
+    for (const PairSample& s : samples) {
+        // A part pair that no longer touches forgets its impulses.
+        PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        if (s.manifolds.empty())
+            for (PersistentManifold& pm : ps.manifolds) pm.clear();
+        scheduleSampled(s, t, !s.manifolds.empty());
+    }
+}
+
+void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds) {
+    for (int sweep = 0; sweep < settings_.collision_iterations; ++sweep) {
+        bool any = false;
+        for (ContactManifold& m : manifolds) {
+            RigidBody& a = bodies_[static_cast<std::size_t>(m.body_a)];
+            RigidBody& b = bodies_[static_cast<std::size_t>(m.body_b)];
+            const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
+            const double un = u.dot(m.normal);
+            if (!(un < 0.0)) continue;
+            const double e = -un < settings_.restitution_threshold ? 0.0 : m.restitution;
+            const ImpulseResult r =
+                settings_.response == ResponseModel::Vroc1995
+                    ? vroc1995Impulse(a, b, m.centroid, m.normal, e)
+                    : newtonCoulombImpulse(a, b, m.centroid, m.normal, e, m.friction);
+            if (r.trouble == ImpulseTrouble::IllConditioned) warn("ill_conditioned_solve");
+            if (r.trouble == ImpulseTrouble::Degenerate) warn("degenerate_contact");
+            if (!r.impulse.allFinite()) {
+                warn("nonfinite_state");
+                continue;
+            }
+            if (r.impulse.isZero(0.0)) continue;
+            a.applyImpulse(-r.impulse, m.centroid);
+            b.applyImpulse(r.impulse, m.centroid);
+            // The old drift was for the old velocity: the bodies fly from now until the solve.
+            for (int body : {m.body_a, m.body_b}) {
+                if (is_static_[static_cast<std::size_t>(body)]) continue;
+                drift_until_[static_cast<std::size_t>(body)] = valid_at_[static_cast<std::size_t>(body)];
+                bumpVersion(body);
+            }
+            m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
+            if (std::getenv("VROC_DEBUG") && r.impulse.norm() * std::max(a.inv_mass, b.inv_mass) > 20.0)
+                std::fprintf(stderr, "BIGCOLL %d-%d un=%.3g j=%.3g n=(%.3f %.3f %.3f) c=(%.4f %.4f %.4f) d=%.4g\n", m.body_a, m.body_b, un, r.impulse.norm(), m.normal.x(), m.normal.y(), m.normal.z(), m.centroid.x(), m.centroid.y(), m.centroid.z(), m.distance);
+            any = true;
+        }
+        if (!any) break;
+    }
+}
+
+void NativeBackend::emitEvents(const std::vector<PairSample>& samples, double t) {
+    // One event per pair that starts touching with a positive impulse: at its strongest manifold.
+    for (const PairSample& s : samples) {
+        if (s.manifolds.empty()) continue;
+        const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        if (ps.touching) continue;   // continuing contact
+        double sum = 0.0;
+        const ContactManifold* best = nullptr;
+        for (const ContactManifold& m : s.manifolds) {
+            const double j = m.collision_impulse + m.contact_impulse;
+            if (best == nullptr || j > best->collision_impulse + best->contact_impulse) best = &m;
+            sum += j;
+        }
+        if (!(sum > 0.0)) continue;
+        CollisionEvent e;
+        e.time = t;
+        e.body_a = ps.a;
+        e.body_b = ps.b;
+        e.point = best->centroid;
+        e.normal = best->normal;
+        e.impulse = sum;
+        events_.push_back(e);
+        ++stats_.collisions;
+    }
+}
+
+void NativeBackend::separatePenetrating(const PairSample& s) {
+    // Emergency only: the contact phase's position pass repairs shallow penetration. Move the
+    // bodies apart along the normal (by inverse mass) to half the collision distance.
+    const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+    RigidBody& a = bodies_[static_cast<std::size_t>(ps.a)];
+    RigidBody& b = bodies_[static_cast<std::size_t>(ps.b)];
+    const double w = a.inv_mass + b.inv_mass;
+    if (!(w > 0.0) || !s.normal.allFinite()) return;
+    warn("penetration_recovered");
+    if (std::getenv("VROC_DEBUG")) std::fprintf(stderr, "PEN t=%.6f step=%lld pair %d-%d d=%.6g n=(%.3f %.3f %.3f) touching=%d tick_a=%.6f tick_b=%.6f drift_a=%.6f\n", valid_at_[ps.a], (long long)step_index_, ps.a, ps.b, s.distance, s.normal.x(), s.normal.y(), s.normal.z(), (int)ps.touching, tick_end_[ps.a], tick_end_[ps.b], drift_until_[ps.a]);
+    const double push = 0.5 * scene_.collision_distance - s.distance;
+    a.com -= (a.inv_mass / w) * push * s.normal;
+    b.com += (b.inv_mass / w) * push * s.normal;
+    box_dirty_[static_cast<std::size_t>(ps.a)] = 1;
+    box_dirty_[static_cast<std::size_t>(ps.b)] = 1;
+}
+
+}  // namespace vroc::native

@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: MIT
+// Broad phase and narrow phase of the native step: which pairs exist (sweep and prune on swept
+// boxes), their closest features (the coherent walk), their contact patches reduced to manifolds,
+// and when each pair in flight must be looked at again (the collision queue's key).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <cstdio>
+#include <cstdlib>
+
+#include "backend/native_backend.h"
+#include "backend/part_query.h"
+#include "scheduling/collision_time_bound.h"
+
+namespace vroc::native {
+namespace {
+
+// Separation targets as fractions of the collision distance (docs/native-scheduling.md): a pair in
+// flight is looked at again before it can close below 3/4 of it; a touching pair that no solve
+// covers before its island is solved below 1/4 (never to 0).
+constexpr double kApproachTarget = 0.75;
+constexpr double kTouchingFloor = 0.25;
+constexpr double kTouchingMinAllowance = 0.125;
+// A pair its island's contact phase holds may close to this (a penetration of 3/4 of the collision
+// distance at worst, repaired by the next solve's position pass; deeper is an emergency).
+constexpr double kSolvedFloor = -0.75;
+// Shortest re-solve interval of a held pair, as a fraction of the island tick.
+constexpr double kHeldMinTick = 0.125;
+// How far ahead [s] a pair's earliest collision time is computed for the queue.
+constexpr double kQueueHorizon = 1.0;
+// Pairs below this count are sampled on the calling thread (waking the pool costs more).
+constexpr std::size_t kMinParallelPairs = 8;
+
+}  // namespace
+
+NativeBackend::PairState& NativeBackend::pairState(int a, int b) {
+    const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+                              static_cast<std::uint32_t>(b);
+    auto [it, inserted] = pair_index_.try_emplace(key, static_cast<int>(pairs_.size()));
+    if (inserted) {
+        PairState ps;
+        ps.a = a;
+        ps.b = b;
+        const std::size_t n = shapes_[static_cast<std::size_t>(a)].parts.size() * shapes_[static_cast<std::size_t>(b)].parts.size();
+        ps.caches.resize(n);
+        ps.manifolds.resize(n);
+        pairs_.push_back(std::move(ps));
+    }
+    return pairs_[static_cast<std::size_t>(it->second)];
+}
+
+void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
+    // A box swept from the body's valid time to the frame end stays valid while the body keeps its
+    // motion, so only bodies whose velocity or position was changed need a new one.
+    bool changed = false;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (!all && box_dirty_[i] == 0) continue;
+        box_dirty_[i] = 0;
+        if (bodies_[i].is_static) continue;
+        broad_phase_.setAabb(static_cast<int>(i), sweptBox(static_cast<int>(i)));
+        changed = true;
+    }
+    if (!changed && !all) return;
+    broad_phase_.update();
+    const std::int64_t stamp = ++broad_updates_;
+    std::vector<int> next;
+    next.reserve(broad_phase_.pairs().size());
+    for (const BodyPair& bp : broad_phase_.pairs()) {
+        PairState& ps = pairState(bp.a, bp.b);
+        const int idx = static_cast<int>(&ps - pairs_.data());
+        ps.broad_stamp = stamp;
+        if (!ps.in_broad_phase) {
+            ps.in_broad_phase = true;
+            entered.push_back(idx);
+        }
+        next.push_back(idx);
+    }
+    for (int idx : candidates_) {
+        PairState& ps = pairs_[static_cast<std::size_t>(idx)];
+        if (ps.broad_stamp == stamp) continue;
+        ps.in_broad_phase = false;   // its boxes parted: it cannot touch before they meet again
+        queue_.removePair(idx);
+        if (ps.touching) {
+            ps.touching = false;
+            touching_.erase(idx);
+            ticks_dirty_ = true;
+        }
+        for (PersistentManifold& m : ps.manifolds) m.clear();
+    }
+    candidates_ = std::move(next);
+    for (auto& list : body_pairs_) list.clear();
+    for (int idx : candidates_) {
+        const PairState& ps = pairs_[static_cast<std::size_t>(idx)];
+        body_pairs_[static_cast<std::size_t>(ps.a)].push_back(idx);
+        body_pairs_[static_cast<std::size_t>(ps.b)].push_back(idx);
+    }
+}
+
+NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
+    PairState& ps = pairs_[static_cast<std::size_t>(pair_index)];
+    PairSample out;
+    out.pair = pair_index;
+    out.distance = std::numeric_limits<double>::infinity();
+    const BodyShape& sa = shapes_[static_cast<std::size_t>(ps.a)];
+    const BodyShape& sb = shapes_[static_cast<std::size_t>(ps.b)];
+    const Pose fa = bodies_[static_cast<std::size_t>(ps.a)].framePose();
+    const Pose fb = bodies_[static_cast<std::size_t>(ps.b)].framePose();
+    const ContactMaterial mat = combineMaterials(scene_.materials[scene_.bodies[ps.a].material],
+                                                 scene_.materials[scene_.bodies[ps.b].material]);
+    const double cd = scene_.collision_distance;
+    for (std::size_t i = 0; i < sa.parts.size(); ++i) {
+        const Pose pa = fa * sa.parts[i].local;
+        for (std::size_t j = 0; j < sb.parts.size(); ++j) {
+            const Pose pb = fb * sb.parts[j].local;
+            const std::size_t part_pair = i * sb.parts.size() + j;
+            FeatureCache& cache = ps.caches[part_pair];
+            const ProximityResult r = queryParts(sa.parts[i], pa, sb.parts[j], pb, cache);
+            ++out.queries;
+            out.walk_steps += r.walk_steps;
+            out.max_walk = std::max(out.max_walk, r.walk_steps);
+            if (!r.converged) ++out.not_converged;
+            out.parts.push_back({r.distance, r.normal});
+            if (r.distance < out.distance) {
+                out.distance = r.distance;
+                out.normal = r.normal;
+            }
+            if (!(r.distance < cd)) continue;
+            ContactManifold m;
+            m.body_a = ps.a;
+            m.body_b = ps.b;
+            m.pair = pair_index;
+            m.normal = r.normal;
+            m.distance = r.distance;
+            const ContactPatch patch = partPatch(sa.parts[i], pa, sb.parts[j], pb, cache, r, cd);
+            m.centroid = patch.centroid;
+            m.points = reduceContactPoints(patch.points, r.normal);
+            if (m.points.empty()) m.points.push_back(patch.centroid);
+            m.restitution = mat.restitution;
+            m.friction = mat.friction;
+            out.manifolds.push_back(std::move(m));
+            out.manifold_part.push_back(static_cast<int>(part_pair));
+        }
+    }
+    return out;
+}
+
+std::vector<NativeBackend::PairSample> NativeBackend::samplePairs(const std::vector<int>& pairs, double t) {
+    // Bodies are brought to t serially (the result is thread-count free); a pair's sample is then a
+    // pure function of that pair, so any worker count gives the same bits.
+    for (int idx : pairs) {
+        const PairState& ps = pairs_[static_cast<std::size_t>(idx)];
+        syncBody(ps.a, t);
+        syncBody(ps.b, t);
+    }
+    std::vector<PairSample> samples;
+    if (pairs.size() < kMinParallelPairs) {
+        samples.reserve(pairs.size());
+        for (int idx : pairs) samples.push_back(samplePair(idx));
+    } else {
+        samples = partition_->map<PairSample>(pairs.size(), [&](std::size_t k) { return samplePair(pairs[k]); });
+    }
+    for (const PairSample& s : samples) pairs_[static_cast<std::size_t>(s.pair)].sampled_step = step_index_;
+    return samples;
+}
+
+void NativeBackend::recordSamples(const std::vector<PairSample>& samples) {
+    for (const PairSample& s : samples) {
+        stats_.narrow_queries += s.queries;
+        stats_.walk_steps += s.walk_steps;
+        stats_.max_walk_steps = std::max<std::int64_t>(stats_.max_walk_steps, s.max_walk);
+        if (s.not_converged > 0) warn("walk_not_converged", static_cast<std::uint64_t>(s.not_converged));
+        if (!std::isfinite(s.distance)) warn("nonfinite_distance");
+        // The solver's position pass repairs penetration shallower than the collision distance;
+        // deeper is an emergency (counted), repaired by moving the bodies.
+        if (s.distance < -scene_.collision_distance) separatePenetrating(s);
+    }
+}
+
+void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) {
+    PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+    const double cd = scene_.collision_distance;
+    const bool touching = !s.manifolds.empty();
+    ps.touching = touching;
+    ps.sampled_once = true;
+    double until_a = kNever, until_b = kNever;
+    const MotionBound ma = motionBound(ps.a, until_a);
+    const MotionBound mb = motionBound(ps.b, until_b);
+    const double horizon = std::min(kQueueHorizon, std::min(until_a, until_b) - t);
+    if (!touching && std::getenv("VROC_PAIR") && std::atoi(std::getenv("VROC_PAIR")) == ps.b)
+        std::fprintf(stderr, "FLIGHT t=%.6f pair %d-%d d=%.4g\n", t, ps.a, ps.b, s.distance);
+    if (!touching) {
+        if (touching_.erase(s.pair) > 0) ticks_dirty_ = true;
+        double key = t + std::max(0.0, horizon);
+        if (s.deferred) {
+            key = s.contact_time;   // certified by the contact time refinement
+        } else {
+            for (const PairSample::PartGap& g : s.parts)
+                key = std::min(key, t + earliestCollisionTime(g.distance - kApproachTarget * cd, g.normal, ma, mb,
+                                                              std::max(0.0, horizon)));
+        }
+        queue_.push(s.pair, ps.a, ps.b, key);
+        return;
+    }
+    if (touching_.insert(s.pair).second) ticks_dirty_ = true;
+    queue_.removePair(s.pair);
+    // A touching pair is held by its island's contact phase at its contact points to first order;
+    // rotation can bring other features down, a free body can fall back, a new contact has had no
+    // solve yet. So the island is solved again before the pair can close too far (motion bounds; a
+    // resting pile's bounds are long, a tumbling body's short). A pair solved with both bodies
+    // drifting may close to kSolvedFloor (the next solve's position pass repairs that); any other
+    // touching pair only to the floor of the window.
+    auto drifting = [&](int body) {
+        return is_static_[static_cast<std::size_t>(body)] || drift_until_[static_cast<std::size_t>(body)] > t;
+    };
+    const bool held = solved && drifting(ps.a) && drifting(ps.b);
+    double bound = std::max(0.0, horizon);
+    for (const PairSample::PartGap& g : s.parts) {
+        const double allowed =
+            held ? g.distance - kSolvedFloor * cd
+                 : (g.distance < cd ? std::max(g.distance - kTouchingFloor * cd, kTouchingMinAllowance * cd)
+                                    : g.distance - kApproachTarget * cd);
+        bound = std::min(bound, earliestCollisionTime(allowed, g.normal, ma, mb, bound));
+    }
+    // A held pair already at its floor does not call for a solve at once: the one that just ran
+    // repairs it; the next comes after a fraction of the tick.
+    if (held) bound = std::max(bound, kHeldMinTick * frame_dt_ / static_cast<double>(settings_.contact_substeps));
+    if (std::getenv("VROC_PAIR") && std::atoi(std::getenv("VROC_PAIR")) == ps.b)
+        std::fprintf(stderr, "SCHED t=%.6f pair %d-%d d=%.4g held=%d solved=%d bound=%.4g va=(%.3g %.3g %.3g) vb=(%.3g %.3g %.3g) wb=%.3g drift_b=%.6f\n", t, ps.a, ps.b, s.distance, (int)held, (int)solved, bound,
+            ma.velocity.x(), ma.velocity.y(), ma.velocity.z(), mb.velocity.x(), mb.velocity.y(), mb.velocity.z(), mb.angular_speed, drift_until_[ps.b]);
+    for (int body : {ps.a, ps.b})
+        if (!is_static_[static_cast<std::size_t>(body)])
+            setTick(body, std::min(tick_end_[static_cast<std::size_t>(body)], t + bound));
+}
+
+}  // namespace vroc::native

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#include "scheduling/island_builder.h"
+
+#include <numeric>
+#include <utility>
+
+namespace vroc::native {
+
+void IslandBuilder::reset(const std::vector<bool>& is_static) {
+    is_static_ = is_static;
+    parent_.resize(is_static.size());
+    std::iota(parent_.begin(), parent_.end(), 0);
+}
+
+int IslandBuilder::islandOf(int body) {
+    if (is_static_[static_cast<std::size_t>(body)]) return -1;
+    int root = body;
+    while (parent_[static_cast<std::size_t>(root)] != root) root = parent_[static_cast<std::size_t>(root)];
+    while (parent_[static_cast<std::size_t>(body)] != root) {   // path compression
+        const int next = parent_[static_cast<std::size_t>(body)];
+        parent_[static_cast<std::size_t>(body)] = root;
+        body = next;
+    }
+    return root;
+}
+
+void IslandBuilder::join(int a, int b) {
+    if (is_static_[static_cast<std::size_t>(a)] || is_static_[static_cast<std::size_t>(b)]) return;
+    int ra = islandOf(a), rb = islandOf(b);
+    if (ra == rb) return;
+    if (rb < ra) std::swap(ra, rb);
+    parent_[static_cast<std::size_t>(rb)] = ra;   // the smaller index stays the root: order-free names
+}
+
+}  // namespace vroc::native
