@@ -24,6 +24,9 @@ GRAVITY = [0.0, 0.0, -9.81]
 FRAME_DT = 1.0 / 60.0
 COLLISION_DISTANCE = 0.001
 CLEARANCE = 0.005            # [m] least gap between bounding spheres (and to walls / floor) at t = 0
+# [m] gap between bodies placed resting on one another: half the collision distance, i.e. in contact
+# as the collision distance defines it (the shipped scenes do the same, e.g. chair.json).
+REST_GAP = 0.0005
 
 # Targets of issue 9, quoted in every description (and in README.md).
 TARGET_SPEED = "native total step time <= Bullet's (bullet.substeps=1)"
@@ -118,13 +121,14 @@ def pyramid(base):
         n = base - row
         for i in range(n):
             x = (i - (n - 1) / 2) * pitch
-            z = PYR_HALF + row * 2 * PYR_HALF
+            z = PYR_HALF + REST_GAP + row * (2 * PYR_HALF + REST_GAP)
             bodies.append(virtual(f"r{row:02d}_b{i:02d}", "box", 1.0, box_shape([PYR_HALF] * 3), vec([x, 0.0, z])))
             count += 1
-    top = PYR_HALF + (base - 1) * 2 * PYR_HALF
+    top = r9(PYR_HALF + REST_GAP + (base - 1) * (2 * PYR_HALF + REST_GAP))
     desc = (f"Issue 9 stress scene: a 2D pyramid of 0.5 m boxes (Box2D 'large pyramid' style), base {base}, "
             f"{base} rows, {count} boxes of 1 kg (friction 0.6, restitution 0) on a real floor (top z = 0). "
-            f"Rows rest exactly on each other (box centres at z = 0.25 + 0.5 row), neighbours in a row are "
+            f"Rows rest on each other {REST_GAP} m apart (half the collision distance: in contact), "
+            f"neighbours in a row are "
             f"{PYR_GAP} m apart (pitch {pitch} m, rows centred on x = 0, y = 0); the top box starts at z = {top} m. "
             "Everything starts at rest in contact: the pyramid should just stand. "
             "Measured: total/median/worst step time, deepest penetration, max displacement of any box from its "
@@ -258,11 +262,11 @@ def stack_ratio():
     bodies = [floor("ground", 3.0)]
     for k in range(20):
         bodies.append(virtual(f"box{k:02d}", "wood", 1.0 if k % 2 == 0 else 10.0, box_shape([0.25] * 3),
-                              [0.0, 0.0, 0.25 + 0.5 * k]))
-    desc = ("Issue 9 stress scene: a stack of 20 boxes of 0.5 m standing exactly on one another (no gaps) on a "
+                              [0.0, 0.0, r9(0.25 + REST_GAP + (0.5 + REST_GAP) * k)]))
+    desc = ("Issue 9 stress scene: a stack of 20 boxes of 0.5 m standing on one another (0.5 mm apart: in contact) on a "
             "real floor (top z = 0), masses alternating 1 kg (box00, the bottom one, and every even index) and "
             "10 kg (odd indices): a 1:10 mass ratio at every interface. Friction 0.6, restitution 0. The top box "
-            "box19 starts at z = 9.75 m. It should hold. Measured: total/median/worst step time, deepest "
+            "box19 starts at z = 9.7605 m. It should hold. Measured: total/median/worst step time, deepest "
             "penetration, top box drift (max distance of box19 from its start). "
             + targets("top box drift <= 1 cm"))
     mats = {"wood": {"restitution": 0.0, "friction": 0.6}, "ground": {"restitution": 0.0, "friction": 0.6}}
@@ -305,7 +309,7 @@ def plank():
     sup_half = [0.1, 0.2, 0.15]           # 0.2 x 0.4 x 0.3 m supports, top at z = 0.3
     sup_x = 1.8
     plank_half = [2.0, 0.15, 0.025]        # 4 m x 0.3 m x 0.05 m
-    plank_z = 2 * sup_half[2] + plank_half[2]
+    plank_z = 2 * sup_half[2] + REST_GAP + plank_half[2]
     box_half = 0.15
     drop = 0.5
     box_z = plank_z + plank_half[2] + drop + box_half
@@ -316,7 +320,7 @@ def plank():
         virtual("plank", "wood", 10.0, box_shape(plank_half), vec([0.0, 0.0, plank_z])),
         virtual("box", "wood", 5.0, box_shape([box_half] * 3), vec([0.0, 0.0, box_z])),
     ]
-    desc = (f"Issue 9 stress scene: a long thin plank (4 m x 0.3 m x 0.05 m, 10 kg) resting exactly on two real "
+    desc = (f"Issue 9 stress scene: a long thin plank (4 m x 0.3 m x 0.05 m, 10 kg) resting (0.5 mm above: in contact) on two real "
             f"support boxes (0.2 x 0.4 x 0.3 m, centred at x = +-{sup_x} m, tops at z = 0.3 m; plank centre "
             f"z = {r9(plank_z)} m, overhang 0.1 m beyond each support) and a 0.3 m box (5 kg) dropped from rest onto its "
             f"middle, its bottom {drop} m above the plank's top (centre z = {r9(box_z)} m). Friction 0.6, "
@@ -345,13 +349,14 @@ def scaling(count, seed=9):
         cy = (i - (rows - 1) / 2) * STACK_PITCH
         for k in range(STACK_HEIGHT):
             yaw = math.radians(rng.uniform(-3.0, 3.0))
-            p = [cx + rng.uniform(-0.01, 0.01), cy + rng.uniform(-0.01, 0.01), SCALE_HALF + 2 * SCALE_HALF * k]
+            p = [cx + rng.uniform(-0.01, 0.01), cy + rng.uniform(-0.01, 0.01),
+                 SCALE_HALF + REST_GAP + (2 * SCALE_HALF + REST_GAP) * k]
             q = [0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)]
             bodies.append(virtual(f"s{s:04d}_{k}", "box", 1.0, box_shape([SCALE_HALF] * 3), vec(p, g6), vec(q, g6)))
     desc = (f"Issue 9 scaling scene: {count} boxes of 0.2 m (1 kg, friction 0.6, restitution 0) in {stacks} stacks "
             f"of {STACK_HEIGHT} on a real floor (top z = 0), stacks on a {cols} x {rows} grid of pitch {STACK_PITCH} m "
-            f"(they never touch each other). Within a stack the boxes rest exactly face on face (centres at z = 0.1, "
-            f"0.3, 0.5, 0.7 m), each shifted by up to 1 cm in x and y and turned by up to 3 deg about z (seed "
+            f"(they never touch each other). Within a stack the boxes rest face on face 0.5 mm apart (in contact; centres at z = "
+            f"0.1005, 0.301, 0.5015, 0.702 m), each shifted by up to 1 cm in x and y and turned by up to 3 deg about z (seed "
             f"{seed + count}): every body has the same few resting contacts whatever N, so stepping wall time per "
             "simulated second against N shows how the contact handling scales (the series is 100, 400, 1000, "
             "4000 bodies; scripts/dense_contact_bench.py --scaling). " + targets())

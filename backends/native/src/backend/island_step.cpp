@@ -3,8 +3,6 @@
 // island's tick or when a contact appears in it, and nowhere else (docs/native-dynamics.md).
 #include <algorithm>
 #include <map>
-#include <cstdio>
-#include <cstdlib>
 
 #include "backend/native_backend.h"
 #include "dynamics/newton_coulomb.h"
@@ -99,7 +97,13 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         }
     }
     stats_.contacts += static_cast<std::int64_t>(manifolds.size());
-    collisionPhase(manifolds);
+    // A contact that persists from the last solve and approaches slower than gravity closes in one
+    // tick is resting, not colliding: it is left to the contact phase (e = 0), which keeps piles from
+    // micro-bouncing; impacts (new contacts, or faster) go through the collision phase.
+    std::vector<std::uint8_t> resting(manifolds.size(), 0);
+    for (std::size_t m = 0; m < manifolds.size(); ++m)
+        resting[m] = pairs_[static_cast<std::size_t>(manifolds[m].pair)].touching ? 1 : 0;
+    collisionPhase(manifolds, resting, scene_.gravity.norm() * h);
 
     // Contact phase, one solve per island (islands are independent: any worker, same bits).
     std::map<int, IslandSolve> by_root;
@@ -120,8 +124,11 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     solver.iterations = settings_.contact_iterations;
     solver.shock_iterations = settings_.shock_iterations;
     solver.warm_start = settings_.warm_start;
-    solver.correction_floor = 0.25 * cd;
-    solver.correction_target = 0.5 * cd;
+    // Penetration (deeper than rounding: a patch placed exactly touching is left alone) is pushed
+    // back into the window, to cd/4: then the normal comes from the exact closest features again,
+    // not from the penetration query, and the band [0, cd/4] absorbs a resting pile's jitter.
+    solver.correction_floor = -0.01 * cd;
+    solver.correction_target = 0.25 * cd;
     auto solveOne = [&](IslandSolve& is) {
         std::vector<RigidBody> local;
         local.reserve(is.bodies.size());
@@ -164,10 +171,6 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         for (std::size_t k = 0; k < is->bodies.size(); ++k) {
             const int body = is->bodies[k];
             if (is_static_[static_cast<std::size_t>(body)]) continue;
-            if (std::getenv("VROC_DEBUG") && is->impulses[k].linear.norm() * bodies_[body].inv_mass > 20.0) {
-                std::fprintf(stderr, "BIGSOLVE t=%.6f body %d dv=%.3g h=%.3g island bodies=%zu manifolds=%zu\n", t, body, is->impulses[k].linear.norm() * bodies_[body].inv_mass, h, is->bodies.size(), is->manifolds.size());
-                for (int m : is->manifolds) { const auto& mf = manifolds[m]; std::fprintf(stderr, "   m %d-%d d=%.4g n=(%.3f %.3f %.3f) pts=%zu coll=%.3g cont=%.3g\n", mf.body_a, mf.body_b, mf.distance, mf.normal.x(), mf.normal.y(), mf.normal.z(), mf.points.size(), mf.collision_impulse, mf.contact_impulse); for (auto& q : mf.points) std::fprintf(stderr, "      p (%.4f %.4f %.4f)\n", q.x(), q.y(), q.z()); }
-            }
             if (is->impulses[k].supported) {
                 startDrift(body, is->impulses[k], t, h);
             } else if (drift_until_[static_cast<std::size_t>(body)] > t) {
@@ -175,14 +178,6 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
                 bumpVersion(body);
             }
             setTick(body, t + h);
-        }
-    }
-    if (std::getenv("VROC_DEBUG")) {
-        for (IslandSolve* is : work) {
-            double vmax = 0; int arg = -1;
-            for (int b : is->bodies) if (!is_static_[b] && bodies_[b].velocity.norm() > vmax) { vmax = bodies_[b].velocity.norm(); arg = b; }
-            double dmin = 1; for (int m : is->manifolds) dmin = std::min(dmin, manifolds[m].distance);
-            std::fprintf(stderr, "SOLVE t=%.6f h=%.6f bodies=%zu manifolds=%zu points=%d vmax=%.4g (body %d) dmin=%.3g corrected=%d\n", t, h, is->bodies.size(), is->manifolds.size(), is->report.points, vmax, arg, dmin, is->report.corrected_patches);
         }
     }
     // Per-sample totals for the events.
@@ -205,15 +200,18 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
 }
 
-void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds) {
+void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
+                                   double resting_speed) {
     for (int sweep = 0; sweep < settings_.collision_iterations; ++sweep) {
         bool any = false;
-        for (ContactManifold& m : manifolds) {
+        for (std::size_t k = 0; k < manifolds.size(); ++k) {
+            ContactManifold& m = manifolds[k];
             RigidBody& a = bodies_[static_cast<std::size_t>(m.body_a)];
             RigidBody& b = bodies_[static_cast<std::size_t>(m.body_b)];
             const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
             const double un = u.dot(m.normal);
             if (!(un < 0.0)) continue;
+            if (resting[k] != 0 && -un <= resting_speed) continue;
             const double e = -un < settings_.restitution_threshold ? 0.0 : m.restitution;
             const ImpulseResult r =
                 settings_.response == ResponseModel::Vroc1995
@@ -235,8 +233,6 @@ void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds) {
                 bumpVersion(body);
             }
             m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
-            if (std::getenv("VROC_DEBUG") && r.impulse.norm() * std::max(a.inv_mass, b.inv_mass) > 20.0)
-                std::fprintf(stderr, "BIGCOLL %d-%d un=%.3g j=%.3g n=(%.3f %.3f %.3f) c=(%.4f %.4f %.4f) d=%.4g\n", m.body_a, m.body_b, un, r.impulse.norm(), m.normal.x(), m.normal.y(), m.normal.z(), m.centroid.x(), m.centroid.y(), m.centroid.z(), m.distance);
             any = true;
         }
         if (!any) break;
@@ -278,7 +274,6 @@ void NativeBackend::separatePenetrating(const PairSample& s) {
     const double w = a.inv_mass + b.inv_mass;
     if (!(w > 0.0) || !s.normal.allFinite()) return;
     warn("penetration_recovered");
-    if (std::getenv("VROC_DEBUG")) std::fprintf(stderr, "PEN t=%.6f step=%lld pair %d-%d d=%.6g n=(%.3f %.3f %.3f) touching=%d tick_a=%.6f tick_b=%.6f drift_a=%.6f\n", valid_at_[ps.a], (long long)step_index_, ps.a, ps.b, s.distance, s.normal.x(), s.normal.y(), s.normal.z(), (int)ps.touching, tick_end_[ps.a], tick_end_[ps.b], drift_until_[ps.a]);
     const double push = 0.5 * scene_.collision_distance - s.distance;
     a.com -= (a.inv_mass / w) * push * s.normal;
     b.com += (b.inv_mass / w) * push * s.normal;

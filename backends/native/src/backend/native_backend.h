@@ -112,7 +112,10 @@ private:
     /// came): their touching pairs are sampled too, then the collision phase, the contact phase per
     /// island and the drifts; every sample is then scheduled.
     void solveIslands(std::vector<PairSample>& samples, double t);
-    void collisionPhase(std::vector<ContactManifold>& manifolds);
+    /// Restitution and friction impulses at approaching manifolds; a `resting` one (touching at its
+    /// last solve) approaching slower than `resting_speed` [m/s] is left to the contact phase.
+    void collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
+                        double resting_speed);
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Impacts are resolved at touching, not at the window gap: shortens the step `h` [s] from `t` [s]
     /// to the refined contact time and clears those samples' manifolds (scheduling/impact_deferral.cpp).

@@ -17,10 +17,8 @@ struct NativeStatistics {
     std::int64_t narrow_queries = 0;         ///< part-pair proximity queries
     std::int64_t walk_steps = 0;             ///< summed over queries
     std::int64_t max_walk_steps = 0;
-    std::int64_t toi_limited_steps = 0;      ///< internal steps cut short by a pair's contact bound
     std::int64_t step_solves = 0;            ///< contact-phase solves, one per island solved
-    std::int64_t queue_pops = 0;             ///< pairs taken from the collision queue for a query
-    std::int64_t queue_skips = 0;            ///< broad-phase pairs left untouched (their time had not come)
+    std::int64_t queue_pops = 0;             ///< flight pairs queried (their key came, or a body changed)
     std::int64_t collisions = 0;             ///< collision events
     std::int64_t contacts = 0;               ///< touching part pairs, summed over internal steps
     std::int64_t contact_points = 0;         ///< contact-phase points, summed over internal steps
@@ -40,10 +38,8 @@ struct NativeStatistics {
         s["narrow_queries"] = static_cast<double>(narrow_queries);
         s["walk_steps_mean"] = static_cast<double>(walk_steps) / queries;
         s["walk_steps_max"] = static_cast<double>(max_walk_steps);
-        s["toi_iterations"] = static_cast<double>(toi_limited_steps);
         s["contact_solves"] = static_cast<double>(step_solves);
         s["queue_pops"] = static_cast<double>(queue_pops);
-        s["queue_skips"] = static_cast<double>(queue_skips);
         s["collisions"] = static_cast<double>(collisions);
         s["contacts"] = static_cast<double>(contacts);
         s["contact_points"] = static_cast<double>(contact_points);

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <cstdio>
-#include <cstdlib>
 
 #include "backend/native_backend.h"
 #include "backend/part_query.h"
@@ -21,11 +19,10 @@ namespace {
 constexpr double kApproachTarget = 0.75;
 constexpr double kTouchingFloor = 0.25;
 constexpr double kTouchingMinAllowance = 0.125;
-// A pair its island's contact phase holds may close to this (a penetration of 3/4 of the collision
+// A pair its island's contact phase holds may close to this (a penetration of half the collision
 // distance at worst, repaired by the next solve's position pass; deeper is an emergency).
-constexpr double kSolvedFloor = -0.75;
-// Shortest re-solve interval of a held pair, as a fraction of the island tick.
-constexpr double kHeldMinTick = 0.125;
+constexpr double kSolvedFloor = -0.5;
+
 // How far ahead [s] a pair's earliest collision time is computed for the queue.
 constexpr double kQueueHorizon = 1.0;
 // Pairs below this count are sampled on the calling thread (waking the pool costs more).
@@ -186,8 +183,6 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
     const MotionBound ma = motionBound(ps.a, until_a);
     const MotionBound mb = motionBound(ps.b, until_b);
     const double horizon = std::min(kQueueHorizon, std::min(until_a, until_b) - t);
-    if (!touching && std::getenv("VROC_PAIR") && std::atoi(std::getenv("VROC_PAIR")) == ps.b)
-        std::fprintf(stderr, "FLIGHT t=%.6f pair %d-%d d=%.4g\n", t, ps.a, ps.b, s.distance);
     if (!touching) {
         if (touching_.erase(s.pair) > 0) ticks_dirty_ = true;
         double key = t + std::max(0.0, horizon);
@@ -221,12 +216,6 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
                                     : g.distance - kApproachTarget * cd);
         bound = std::min(bound, earliestCollisionTime(allowed, g.normal, ma, mb, bound));
     }
-    // A held pair already at its floor does not call for a solve at once: the one that just ran
-    // repairs it; the next comes after a fraction of the tick.
-    if (held) bound = std::max(bound, kHeldMinTick * frame_dt_ / static_cast<double>(settings_.contact_substeps));
-    if (std::getenv("VROC_PAIR") && std::atoi(std::getenv("VROC_PAIR")) == ps.b)
-        std::fprintf(stderr, "SCHED t=%.6f pair %d-%d d=%.4g held=%d solved=%d bound=%.4g va=(%.3g %.3g %.3g) vb=(%.3g %.3g %.3g) wb=%.3g drift_b=%.6f\n", t, ps.a, ps.b, s.distance, (int)held, (int)solved, bound,
-            ma.velocity.x(), ma.velocity.y(), ma.velocity.z(), mb.velocity.x(), mb.velocity.y(), mb.velocity.z(), mb.angular_speed, drift_until_[ps.b]);
     for (int body : {ps.a, ps.b})
         if (!is_static_[static_cast<std::size_t>(body)])
             setTick(body, std::min(tick_end_[static_cast<std::size_t>(body)], t + bound));

@@ -34,6 +34,7 @@ struct PointConstraint {
     int manifold = -1;
     Vec3 ra, rb;            // contact point - COM, world
     Vec3 n, t1, t2;         // normal A->B and tangent basis
+    Vec3 ra_n, rb_n;        // ra x n, rb x n (the normal's moment arms, fixed for the step)
     double target = 0.0;    // [m/s] lower bound on the final normal relative velocity
     double start_speed = 0.0;   // [m/s] normal relative velocity at the step start
     double mu = 0.0;
@@ -238,19 +239,37 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
         factorNormalBlock(wb, cs, p, freeze_a, freeze_b);
         p.block_cached[key] = true;
     }
+    // The patch's points share the normal: n.u_i = n.(v_b - v_a) + w_b.(r_bi x n) - w_a.(r_ai x n),
+    // and the increments apply as one net impulse and one net moment per body.
+    WorkBody& a = wb[p.friction.a];
+    WorkBody& b = wb[p.friction.b];
+    const Vec3& normal = p.friction.n;
+    const double un_lin = normal.dot(b.v - a.v);
     Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
     for (int i = 0; i < n; ++i) {
         const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
-        rhs(i) = ci.target - relativeVelocity(wb, ci).dot(ci.n);
+        rhs(i) = ci.target - (un_lin + b.w.dot(ci.rb_n) - a.w.dot(ci.ra_n));
     }
     const Eigen::Vector4d x = p.block[key] * rhs;
     if (!x.allFinite()) return false;
     for (int i = 0; i < n; ++i)
         if (cs[static_cast<std::size_t>(p.first + i)].lambda_n + x(i) < 0.0) return false;
+    double total = 0.0;
+    Vec3 moment_a = Vec3::Zero(), moment_b = Vec3::Zero();
     for (int i = 0; i < n; ++i) {
         PointConstraint& c = cs[static_cast<std::size_t>(p.first + i)];
-        applyPair(wb, c, x(i) * c.n, freeze_a, freeze_b);
+        total += x(i);
+        moment_a += x(i) * c.ra_n;
+        moment_b += x(i) * c.rb_n;
         c.lambda_n += x(i);
+    }
+    if (!freeze_a) {
+        a.v -= (a.inv_mass * total) * normal;
+        a.w -= a.inv_inertia * moment_a;
+    }
+    if (!freeze_b) {
+        b.v += (b.inv_mass * total) * normal;
+        b.w += b.inv_inertia * moment_b;
     }
     return true;
 }
@@ -409,6 +428,8 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         c.t1 = c.n.unitOrthogonal();
         c.t2 = c.n.cross(c.t1);
         c.mu = mf.friction;
+        c.ra_n = c.ra.cross(c.n);
+        c.rb_n = c.rb.cross(c.n);
         c.start_speed = relativeVelocity(wb, c).dot(c.n);
         c.target = -std::max(0.0, c.start_speed);
         return c;
