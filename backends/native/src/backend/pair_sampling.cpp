@@ -22,6 +22,8 @@ constexpr double kTouchingMinAllowance = 0.125;
 // A pair its island's contact phase holds may close to this (a penetration of half the collision
 // distance at worst, repaired by the next solve's position pass; deeper is an emergency).
 constexpr double kSolvedFloor = -0.5;
+// Shortest interval between solves of an island held by its last solve, as a fraction of its tick.
+constexpr double kHeldMinTick = 1.0 / 16.0;
 
 // How far ahead [s] a pair's earliest collision time is computed for the queue.
 constexpr double kQueueHorizon = 1.0;
@@ -216,6 +218,10 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
                                     : g.distance - kApproachTarget * cd);
         bound = std::min(bound, earliestCollisionTime(allowed, g.normal, ma, mb, bound));
     }
+    // A held pair already at its floor does not call for another solve at once (the one that just
+    // ran is repairing it): the next comes after a fraction of the tick at the earliest. This
+    // keeps a squeezed body from freezing time in zero-length steps.
+    if (held) bound = std::max(bound, kHeldMinTick * frame_dt_ / static_cast<double>(settings_.contact_substeps));
     for (int body : {ps.a, ps.b})
         if (!is_static_[static_cast<std::size_t>(body)])
             setTick(body, std::min(tick_end_[static_cast<std::size_t>(body)], t + bound));
