@@ -2,6 +2,7 @@
 // Islands of the native step: bodies joined by touching pairs are solved together, at their
 // island's tick or when a contact appears in it, and nowhere else (docs/native-dynamics.md).
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "backend/native_backend.h"
@@ -79,7 +80,9 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // Manifolds of the due islands, warm started from their pairs' caches.
     // The island's tick: a fixed fraction of the frame. It may run past the frame end (the bodies
     // are then reported mid-drift): an impact just before a frame end does not cost a sliver solve.
-    const double h = frame_dt_ / static_cast<double>(settings_.contact_substeps);
+    // A tick that ends within rounding of the frame end ends exactly there (no sliver steps).
+    double h = frame_dt_ / static_cast<double>(settings_.contact_substeps);
+    if (std::abs(t + h - frame_end_) <= 1e-9 * frame_dt_) h = frame_end_ - t;
     std::vector<ContactManifold> manifolds;
     std::vector<std::pair<int, int>> cache_of;   // (pair, part pair) per manifold
     for (const PairSample& s : samples) {
