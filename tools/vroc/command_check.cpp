@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 // `vroc check`: the analytic accuracy and stability suite (docs/harness.md).
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,8 +12,10 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "vroc/core/errors.h"
 #include "vroc/core/recording/atomic_output.h"
 #include "vroc/harness/check.h"
+#include "vroc/harness/check_suite.h"
 #include "vroc/harness/html_report.h"
 #include "vroc/harness/output_dir.h"
 
@@ -19,17 +25,46 @@ namespace {
 struct CheckArgs {
     std::string backends;
     std::string out_dir;
+    std::string scenes_dir;   ///< --scenes-dir ("" : scenes/stress here, else beside the program)
     std::vector<std::string> assignments;
     harness::CheckOptions options;
     bool quiet = false;
 };
 
+std::filesystem::path programDir() {
+    char buffer[4096];
+    const ssize_t n = readlink("/proc/self/exe", buffer, sizeof buffer - 1);
+    if (n <= 0) return {};
+    buffer[n] = '\0';
+    return std::filesystem::path(buffer).parent_path();
+}
+
+// The stress scenes: --scenes-dir as given, else scenes/stress under the current directory, else
+// ../../scenes/stress beside the program (the source tree when run from build/bin).
+std::filesystem::path stressScenesDir(const std::string& option) {
+    namespace fs = std::filesystem;
+    if (!option.empty()) {
+        if (!fs::is_directory(option))
+            throw InputError("stress scenes directory " + option + " not found (given with --scenes-dir)");
+        return option;
+    }
+    const fs::path here = "scenes/stress";
+    if (fs::is_directory(here)) return here;
+    const fs::path exe = programDir();
+    const fs::path beside = exe.empty() ? fs::path() : (exe / "../../scenes/stress").lexically_normal();
+    if (!beside.empty() && fs::is_directory(beside)) return beside;
+    throw InputError("stress scenes directory not found: " + fs::absolute(here).string() +
+                     (beside.empty() ? "" : " nor " + beside.string()) + " (set it with --scenes-dir DIR)");
+}
+
 int check(CheckArgs& a, const Context& context) {
     const auto backends = harness::selectBackends(a.backends, a.assignments);
     a.options.progress = !a.quiet;
     a.options.command_line = context.command_line;
-    const auto out = a.out_dir.empty() ? harness::defaultOutputDir("check", a.options.long_set ? "long" : "default")
-                                       : std::filesystem::path(a.out_dir);
+    const bool stress = a.options.stress || std::any_of(a.options.only.begin(), a.options.only.end(), harness::isStressScenarioId);
+    if (stress) a.options.scenes_dir = stressScenesDir(a.scenes_dir);
+    const std::string set = std::string(a.options.long_set ? "long" : "default") + (stress ? "-stress" : "");
+    const auto out = a.out_dir.empty() ? harness::defaultOutputDir("check", set) : std::filesystem::path(a.out_dir);
     recording::prepareOutputDirectory(out);
     const harness::Json doc = harness::runCheckSuite(backends, a.options);
     harness::writeDocument(doc, out / "metrics.json");
@@ -48,7 +83,11 @@ Action setup(CLI::App& sub, const Context& context) {
     sub.add_option("--backends", a->backends, "Backends to check, comma-separated (default: all)");
     sub.add_option("--out,-o", a->out_dir, "Output directory (default runs/check-<set>-<time>/)");
     sub.add_flag("--long", a->options.long_set, "Also run the long set (intermediate-axis tumble, 10-box stack, rest time)");
-    sub.add_option("--only", a->options.only, "Run only these scenario ids, repeatable")
+    sub.add_flag("--stress", a->options.stress,
+                 "Add the stress section (issue 9 scenes of scenes/stress: pyramids, 1:10 stack, plank, SimBenchmark 666, bins)");
+    sub.add_option("--scenes-dir", a->scenes_dir,
+                   "Directory of the stress scenes (default scenes/stress here, else ../../scenes/stress beside the program)");
+    sub.add_option("--only", a->options.only, "Run only these scenario ids (stress-<scene> ids imply --stress), repeatable")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_option("--set", a->assignments, "Backend setting key=value (key starts with the backend name), repeatable")
@@ -56,6 +95,7 @@ Action setup(CLI::App& sub, const Context& context) {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress lines");
     sub.footer("Prints the check x backend table; writes metrics.json and report.html.\n"
+               "Stress rows are targets (not required for native); rows marked info are reported, not judged.\n"
                "Exit code 1 when a check required for native fails on the native backend.");
     return [a, context] { return check(*a, context); };
 }

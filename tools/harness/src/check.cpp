@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "vroc/core/errors.h"
 #include "vroc/harness/check_suite.h"
 #include "vroc/harness/html_report.h"
 
@@ -18,16 +19,37 @@ bool passes(double measured, const CheckMetric& m) {
     return std::isfinite(measured) && std::abs(measured - m.expected) <= m.tolerance;
 }
 
+// A result cell: pass null is a metric that is reported, not judged.
+const char* resultText(const Json& pass) { return pass.is_null() ? "info" : pass.get<bool>() ? "pass" : "FAIL"; }
+
 }  // namespace
 
 Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& o) {
     std::vector<CheckScenario> scenarios = checkScenarios(o.long_set);
     if (!o.only.empty())
         std::erase_if(scenarios, [&](const CheckScenario& s) { return std::find(o.only.begin(), o.only.end(), s.id) == o.only.end(); });
+    // The stress section comes after the analytic scenarios; only its selected scenes are loaded.
+    const bool stress = o.stress || std::any_of(o.only.begin(), o.only.end(), isStressScenarioId);
+    if (stress) {
+        std::vector<std::string> only_stress;
+        const std::vector<std::string> known = stressScenarioIds();
+        for (const std::string& id : o.only) {
+            if (!isStressScenarioId(id)) continue;
+            if (std::find(known.begin(), known.end(), id) == known.end()) {
+                std::string list;
+                for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+                throw InputError("--only " + id + ": no such stress scenario (known: " + list + ")");
+            }
+            only_stress.push_back(id);
+        }
+        if (o.only.empty() || !only_stress.empty())
+            for (CheckScenario& s : stressScenarios(o.scenes_dir, only_stress)) scenarios.push_back(std::move(s));
+    }
     Json doc = newDocument("check", o.command_line);
-    doc["title"] = std::string("analytic suite (") + (o.long_set ? "long" : "default") + " set)";
+    doc["title"] = std::string("analytic suite (") + (o.long_set ? "long" : "default") + " set)" + (stress ? " + stress section" : "");
     doc["backends"] = backendsJson(backends);
-    doc["parameters"] = {{"long", o.long_set}, {"scenarios", scenarios.size()}};
+    doc["parameters"] = {{"long", o.long_set}, {"scenarios", scenarios.size()}, {"stress", stress}};
+    if (stress) doc["parameters"]["scenes_dir"] = o.scenes_dir.string();
     Json checks = Json::array();
     Json wall = Json::object();
     int native_failures = 0;
@@ -39,7 +61,7 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
         for (std::size_t m = 0; m < sc.metrics.size(); ++m) {
             const CheckMetric& cm = sc.metrics[m];
             rows[m] = {{"id", cm.id}, {"scenario", sc.id}, {"title", cm.title}, {"closed_form", cm.closed_form},
-                       {"units", cm.units}, {"expected", cm.expected}, {"tolerance", cm.tolerance},
+                       {"units", cm.units}, {"expected", cm.expected}, {"tolerance", number(cm.tolerance)},
                        {"required_for_native", cm.required_for_native}, {"results", Json::object()}};
         }
         for (const SelectedBackend& b : backends) {
@@ -57,8 +79,8 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
                 const CheckMetric& cm = sc.metrics[m];
                 const double measured = trace.finite ? cm.measure(scene, trace) : NAN;
                 const bool ok = passes(measured, cm);
-                if (!ok && cm.required_for_native && b.info->name == kNative) ++native_failures;
-                rows[m]["results"][b.info->name] = {{"measured", number(measured)}, {"pass", ok}};
+                if (!ok && cm.judged() && cm.required_for_native && b.info->name == kNative) ++native_failures;
+                rows[m]["results"][b.info->name] = {{"measured", number(measured)}, {"pass", cm.judged() ? Json(ok) : Json(nullptr)}};
             }
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             wall[b.info->name] = wall.value(b.info->name, 0.0) + seconds;
@@ -78,7 +100,7 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
         std::vector<Json> row = {c["id"], c["closed_form"], c["units"], c["expected"], c["tolerance"], c["required_for_native"]};
         for (const SelectedBackend& b : backends) {
             row.push_back(c["results"][b.info->name]["measured"]);
-            row.push_back(c["results"][b.info->name]["pass"].get<bool>() ? "pass" : "FAIL");
+            row.push_back(resultText(c["results"][b.info->name]["pass"]));
         }
         rows.push_back(row);
     }
@@ -91,6 +113,7 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
         for (std::size_t i = 0; i < checks.size(); ++i) {
             const Json& c = checks[i];
             const Json& meas = c["results"][b.info->name]["measured"];
+            if (c["tolerance"].is_null()) continue;   // reported, not judged
             const double tol = c["tolerance"];
             const double err = meas.is_null() ? 1e6 : std::abs(meas.get<double>() - c["expected"].get<double>());
             const double ratio = tol > 0 ? err / tol : (err > 0 ? 1e6 : 0);
@@ -109,17 +132,21 @@ std::string checkTableText(const Json& doc) {
     char line[512];
     std::vector<std::string> names;
     for (const Json& b : doc["backends"]) names.push_back(b["name"]);
-    std::snprintf(line, sizeof line, "%-36s %-5s %12s %10s", "check", "req", "expected", "tolerance");
+    int width = 36;   // the check column: the longest id (stress ids are longer)
+    for (const Json& c : doc["results"]["checks"]) width = std::max(width, static_cast<int>(c["id"].get<std::string>().size()));
+    std::snprintf(line, sizeof line, "%-*s %-5s %12s %10s", width, "check", "req", "expected", "tolerance");
     out += line;
     for (const auto& n : names) { std::snprintf(line, sizeof line, " | %-8s %12s %-4s", n.c_str(), "measured", ""); out += line; }
     out += "\n";
     for (const Json& c : doc["results"]["checks"]) {
-        std::snprintf(line, sizeof line, "%-36s %-5s %12.4g %10.3g", c["id"].get<std::string>().c_str(),
-                      c["required_for_native"].get<bool>() ? "yes" : "no", c["expected"].get<double>(), c["tolerance"].get<double>());
+        char tolerance[32] = "-";
+        if (!c["tolerance"].is_null()) std::snprintf(tolerance, sizeof tolerance, "%.3g", c["tolerance"].get<double>());
+        std::snprintf(line, sizeof line, "%-*s %-5s %12.4g %10s", width, c["id"].get<std::string>().c_str(),
+                      c["required_for_native"].get<bool>() ? "yes" : "no", c["expected"].get<double>(), tolerance);
         out += line;
         for (const auto& n : names) {
             const Json& r = c["results"][n];
-            std::snprintf(line, sizeof line, " | %-8s %12s %-4s", "", cellText(r["measured"]).c_str(), r["pass"].get<bool>() ? "pass" : "FAIL");
+            std::snprintf(line, sizeof line, " | %-8s %12s %-4s", "", cellText(r["measured"]).c_str(), resultText(r["pass"]));
             out += line;
         }
         out += "\n";

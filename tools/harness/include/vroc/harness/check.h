@@ -18,6 +18,10 @@ struct CheckOptions {
     bool progress = true;
     std::string command_line;
     std::vector<std::string> only;   ///< scenario ids to run (empty: all)
+    /// Append the stress section (stressScenarios) after the analytic scenarios. Also turned on
+    /// when `only` names a stress id.
+    bool stress = false;
+    std::filesystem::path scenes_dir = "scenes/stress";   ///< where the stress scenes are
 };
 
 /// Runs the suite; the document's results.checks lists every metric with per-backend

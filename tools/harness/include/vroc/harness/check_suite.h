@@ -3,6 +3,8 @@
 // with closed-form answers, tolerances and a "required for native" flag.
 #pragma once
 
+#include <cmath>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -18,9 +20,11 @@ struct CheckMetric {
     std::string closed_form;   ///< the formula the expected value comes from
     std::string units;         ///< of measured, expected and tolerance
     double expected = 0;
-    double tolerance = 0;      ///< pass iff |measured - expected| <= tolerance
+    double tolerance = 0;      ///< pass iff |measured - expected| <= tolerance; +infinity: reported, not judged
     bool required_for_native = false;
     std::function<double(const Scene&, const RunTrace&)> measure;
+
+    bool judged() const { return std::isfinite(tolerance); }
 };
 
 struct CheckScenario {
@@ -34,6 +38,19 @@ struct CheckScenario {
 
 /// The default set (< 2 min on one core for two backends), or the long set appended to it.
 std::vector<CheckScenario> checkScenarios(bool long_set);
+
+/// The stress section (issue 9): the committed dense-contact scenes `<scenes_dir>/<scene>.json`
+/// (scenes/stress/), ids "stress-<scene>", each at its file's frame_dt, with targets (not closed
+/// forms, none required for native). `only` non-empty: just those ids. Throws InputError naming
+/// the directory or file when one is missing (and the --scenes-dir option), or what loadScene throws.
+std::vector<CheckScenario> stressScenarios(const std::filesystem::path& scenes_dir,
+                                           const std::vector<std::string>& only = {});
+
+/// Every stress scenario id, in table order (no files read).
+std::vector<std::string> stressScenarioIds();
+
+/// True for ids of the stress section ("stress-...").
+bool isStressScenarioId(const std::string& id);
 
 /// A scenario by id from the default and long sets (for `vroc sweep check:<id>`); throws InputError.
 CheckScenario findCheckScenario(const std::string& id);
