@@ -152,3 +152,41 @@ TEST(NativeIslands, IslandBuilderMatchesBruteForceComponents) {
 
 }  // namespace
 }  // namespace vroc::native::test
+
+namespace vroc::native::test {
+namespace {
+
+TEST(NativeIslands, SleepingIsOffByDefaultAndAPileSleepsAndWakes) {
+    const double cd = 1e-3;
+    Scene s = emptyScene(cd);
+    const int mat = addMaterial(s, 0.0, 0.6);
+    addFloor(s, mat);
+    addStack(s, mat, 0.0, 4, cd);
+    const int ball = addBody(s, "ball", Shape::sphere(0.1), at(Vec3(0, 0, 6.0)), mat, false, 1.0);
+    // Off by default: the pile is solved at every tick.
+    auto awake = makeBackend(s);
+    for (int f = 0; f < 60; ++f) awake->stepFrame(s.frame_dt);
+    EXPECT_EQ(awake->statistics().at("islands_slept"), 0.0);
+    // On: the pile sleeps after 0.5 s still, costs nothing, and wakes when the ball lands on it.
+    NativeSettings ns;
+    ns.sleeping = true;
+    auto be = makeBackend(s, ns);
+    const Vec3 top_start = be->bodyState(4).pose.position;
+    double solves_asleep = -1.0;
+    bool woke = false;
+    for (int f = 0; f < 90; ++f) {
+        be->stepFrame(s.frame_dt);
+        const double solves = be->statistics().at("contact_solves");
+        if (f == 45) solves_asleep = solves;
+        if (f > 45 && f < 50) EXPECT_EQ(solves, solves_asleep) << "frame " << f;   // asleep, ball still falling
+        if (!be->takeEvents().empty() && f > 45) woke = true;
+    }
+    EXPECT_GE(be->statistics().at("islands_slept"), 1.0);
+    EXPECT_TRUE(woke) << "the ball (falling from 6 m, lands at ~1.0 s) must hit the pile";
+    EXPECT_GT(be->statistics().at("contact_solves"), solves_asleep);
+    EXPECT_LT((be->bodyState(4).pose.position - top_start).norm(), 0.02);   // the pile still stands
+    (void)ball;
+}
+
+}  // namespace
+}  // namespace vroc::native::test

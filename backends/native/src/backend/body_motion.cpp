@@ -21,7 +21,7 @@ void NativeBackend::syncBody(int body, double t) {
     double from = valid_at_[i];
     valid_at_[i] = t;
     RigidBody& rb = bodies_[i];
-    if (rb.is_static) return;
+    if (rb.is_static || asleep_[i] != 0) return;
     const RigidBody saved = rb;
     if (drift_until_[i] > from) {
         const double tau = std::min(t, drift_until_[i]) - from;
@@ -45,7 +45,7 @@ void NativeBackend::syncBody(int body, double t) {
 
 MotionBound NativeBackend::ballisticBound(int body) const {
     const RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
-    if (rb.is_static) return MotionBound::stationary();
+    if (rb.is_static || asleep_[static_cast<std::size_t>(body)] != 0) return MotionBound::stationary();
     MotionBound m;
     m.velocity = rb.velocity;
     m.acceleration = scene_.gravity;
@@ -60,7 +60,7 @@ MotionBound NativeBackend::motionBound(int body, double& valid_until) const {
     valid_until = kNever;
     MotionBound m = ballisticBound(body);
     const RigidBody& rb = bodies_[i];
-    if (rb.is_static || !(drift_until_[i] > valid_at_[i])) return m;
+    if (rb.is_static || asleep_[i] != 0 || !(drift_until_[i] > valid_at_[i])) return m;
     valid_until = drift_until_[i];
     m.acceleration = drift_acceleration_[i];
     // |L| grows by at most |torque| t over the drift: |omega| is bounded by its largest value.
@@ -107,6 +107,34 @@ void NativeBackend::startDrift(int body, const BodyImpulse& imp, double t, doubl
     drift_until_[i] = t + h;
     bumpVersion(body);
     recoverIfNonFinite(body, saved);
+}
+
+void NativeBackend::maybeSleep(const std::vector<int>& island, double t) {
+    if (!settings_.sleeping) return;
+    bool all_still = true;
+    for (int body : island) {
+        const std::size_t i = static_cast<std::size_t>(body);
+        if (is_static_[i]) continue;
+        const RigidBody& rb = bodies_[i];
+        const double speed = rb.velocity.norm() + rb.angularVelocity().norm() * shapes_[i].outer_radius;
+        if (!(speed < settings_.sleep_speed)) still_since_[i] = t;
+        if (!(t - still_since_[i] >= settings_.sleep_time)) all_still = false;
+    }
+    if (!all_still) return;
+    for (int body : island) {
+        const std::size_t i = static_cast<std::size_t>(body);
+        if (is_static_[i]) continue;
+        syncBody(body, t);
+        RigidBody& rb = bodies_[i];
+        rb.velocity.setZero();
+        rb.angular_momentum.setZero();
+        rb.refreshEnergy();
+        drift_until_[i] = t;
+        asleep_[i] = 1;
+        setTick(body, kNever);
+        bumpVersion(body);
+    }
+    ++stats_.islands_slept;
 }
 
 }  // namespace vroc::native

@@ -174,6 +174,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         for (std::size_t k = 0; k < is->bodies.size(); ++k) {
             const int body = is->bodies[k];
             if (is_static_[static_cast<std::size_t>(body)]) continue;
+            if (asleep_[static_cast<std::size_t>(body)] != 0) wake(body);   // touched: awake again
             if (is->impulses[k].supported) {
                 startDrift(body, is->impulses[k], t, h);
             } else if (drift_until_[static_cast<std::size_t>(body)] > t) {
@@ -182,6 +183,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             }
             setTick(body, t + h);
         }
+        maybeSleep(is->bodies, t);
     }
     // Per-sample totals for the events.
     {

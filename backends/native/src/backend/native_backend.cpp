@@ -32,6 +32,8 @@ NativeBackend::NativeBackend(const Scene& scene, const NativeSettings& settings)
     drift_torque_.assign(n, Vec3::Zero());
     tick_end_.assign(n, 0.0);
     box_dirty_.assign(n, 1);
+    asleep_.assign(n, 0);
+    still_since_.assign(n, 0.0);
     body_pairs_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const RigidBody& rb = bodies_[i];
@@ -60,6 +62,7 @@ void NativeBackend::setBodyState(int body, const BodyState& state) {
     }
     rb.setFromState(state.pose, state.linear_velocity, state.angular_velocity);
     drift_until_[static_cast<std::size_t>(body)] = time_;   // the drift was for the old state
+    wake(body);
     bumpVersion(body);
 }
 
@@ -72,6 +75,7 @@ void NativeBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& worl
     }
     rb.applyImpulse(impulse, world_point);
     drift_until_[static_cast<std::size_t>(body)] = time_;
+    wake(body);
     bumpVersion(body);
 }
 

@@ -133,6 +133,12 @@ private:
     Aabb sweptBox(int body) const;
     /// Starts a drift of `h` [s] at time t with the contact phase's impulses.
     void startDrift(int body, const BodyImpulse& imp, double t, double h);
+    /// Puts the island's bodies to sleep if every one has been still for sleep_time (sleeping on).
+    void maybeSleep(const std::vector<int>& bodies, double t);
+    void wake(int body) {
+        asleep_[static_cast<std::size_t>(body)] = 0;
+        still_since_[static_cast<std::size_t>(body)] = valid_at_[static_cast<std::size_t>(body)];
+    }
     void bumpVersion(int body) {
         ++versions_[static_cast<std::size_t>(body)];
         box_dirty_[static_cast<std::size_t>(body)] = 1;
@@ -158,6 +164,8 @@ private:
     double next_tick_ = 0.0;                // [s] cached minimum of tick_end_ over touching bodies
     bool ticks_dirty_ = true;
     std::vector<std::uint8_t> box_dirty_;   // per body: its swept broad-phase box must be recomputed
+    std::vector<std::uint8_t> asleep_;      // per body: at rest and not simulated (native.sleeping)
+    std::vector<double> still_since_;       // [s] per body: since when it has been still
     std::vector<int> changed_;              // bodies whose version was bumped since last drained
     std::vector<int> candidates_;           // pairs_ indices of the current broad-phase pairs
     std::set<int> touching_;                // pairs_ indices of touching pairs (sorted)

@@ -25,6 +25,12 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "island ticks per frame: the contact phase's step is frame_dt / this"});
     s.push_back({"native.warm_start", T::Boolean, "true", 0, 0, {},
                  "start each contact solve from the pair's previous impulses (persistent manifolds)"});
+    s.push_back({"native.sleeping", T::Boolean, "false", 0, 0, {},
+                 "put islands at rest to sleep until something touches them (off: comparisons keep every body awake)"});
+    s.push_back({"native.sleep_speed", T::Real, "0.01", 0, 10, {},
+                 "[m/s] a body is still below this speed (COM speed and |w| x outer radius)"});
+    s.push_back({"native.sleep_time", T::Real, "0.5", 0, 1e3, {},
+                 "[s] an island sleeps once all its bodies were still this long"});
     return s;
 }
 
@@ -49,6 +55,9 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.contact_substeps"))
         n.contact_substeps = static_cast<int>(settings.integer("native.contact_substeps"));
     if (has("native.warm_start")) n.warm_start = settings.boolean("native.warm_start");
+    if (has("native.sleeping")) n.sleeping = settings.boolean("native.sleeping");
+    if (has("native.sleep_speed")) n.sleep_speed = settings.real("native.sleep_speed");
+    if (has("native.sleep_time")) n.sleep_time = settings.real("native.sleep_time");
     return n;
 }
 

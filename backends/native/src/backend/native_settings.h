@@ -19,6 +19,9 @@ struct NativeSettings {
     int shock_iterations = 8;               ///< shock-propagation sweeps per level (0 = off)
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
     bool warm_start = true;                 ///< contact phase starts from the previous impulses
+    bool sleeping = false;                  ///< islands at rest stop being simulated until touched
+    double sleep_speed = 0.01;              ///< [m/s] a body is still below it (COM and |w| x radius)
+    double sleep_time = 0.5;                ///< [s] an island sleeps once every body was still this long
 
     static std::vector<SettingSpec> specs();
     static NativeSettings from(const Settings& settings);

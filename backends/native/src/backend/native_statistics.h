@@ -24,6 +24,7 @@ struct NativeStatistics {
     std::int64_t contact_points = 0;         ///< contact-phase points, summed over internal steps
     std::int64_t position_corrections = 0;   ///< patches the split-impulse pass pushed back to the window
     std::int64_t max_island_bodies = 0;      ///< bodies (static ones included) of the largest island solved
+    std::int64_t islands_slept = 0;          ///< islands put to sleep (native.sleeping)
 
     Statistics report() const {
         Statistics s;
@@ -45,6 +46,7 @@ struct NativeStatistics {
         s["contact_points"] = static_cast<double>(contact_points);
         s["position_corrections"] = static_cast<double>(position_corrections);
         s["max_island_bodies"] = static_cast<double>(max_island_bodies);
+        s["islands_slept"] = static_cast<double>(islands_slept);
         return s;
     }
 };
