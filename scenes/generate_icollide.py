@@ -13,8 +13,12 @@ Deterministic (random.Random(seed)), python3 standard library only:
 """
 import json
 import math
+import os
 import random
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_random import random_quaternion, unit_vector  # noqa: E402
 
 COUNT_PER_AXIS = 10          # 10^3 = 1,000 bodies
 CELL = 1.0                   # [m] grid spacing
@@ -31,20 +35,6 @@ def g6(x):
     return float(f"{x:.6g}")
 
 
-def unit_vector(rng):
-    while True:
-        v = [rng.uniform(-1.0, 1.0) for _ in range(3)]
-        n = math.sqrt(sum(c * c for c in v))
-        if 1e-3 < n <= 1.0:
-            return [c / n for c in v]
-
-
-def random_quaternion(rng):
-    # Shoemake's uniform random rotation, written [x, y, z, w].
-    u1, u2, u3 = rng.random(), rng.random(), rng.random()
-    a, b = math.sqrt(1.0 - u1), math.sqrt(u1)
-    return [a * math.sin(2 * math.pi * u2), a * math.cos(2 * math.pi * u2),
-            b * math.sin(2 * math.pi * u3), b * math.cos(2 * math.pi * u3)]
 
 
 def polytope_points(rng):
