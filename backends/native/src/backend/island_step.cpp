@@ -101,11 +101,19 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
     stats_.contacts += static_cast<std::int64_t>(manifolds.size());
     // A contact that persists from the last solve and approaches slower than gravity closes in one
-    // tick is resting, not colliding: it is left to the contact phase (e = 0), which keeps piles from
-    // micro-bouncing; impacts (new contacts, or faster) go through the collision phase.
+    // tick is resting, not colliding: its approach is stopped with e = 0, which keeps piles from
+    // micro-bouncing; impacts (new contacts, or faster) keep their restitution.
+    // (Held: its dynamic bodies drifted with the last solve up to now; a ball bouncing freely in
+    // the window was not held, and its bounces keep their restitution.)
+    auto held = [&](int body) {
+        return is_static_[static_cast<std::size_t>(body)] || drift_until_[static_cast<std::size_t>(body)] >= t;
+    };
     std::vector<std::uint8_t> resting(manifolds.size(), 0);
     for (std::size_t m = 0; m < manifolds.size(); ++m)
-        resting[m] = pairs_[static_cast<std::size_t>(manifolds[m].pair)].touching ? 1 : 0;
+        resting[m] = pairs_[static_cast<std::size_t>(manifolds[m].pair)].touching && held(manifolds[m].body_a) &&
+                             held(manifolds[m].body_b)
+                         ? 1
+                         : 0;
     collisionPhase(manifolds, resting, scene_.gravity.norm() * h);
 
     // Contact phase, one solve per island (islands are independent: any worker, same bits).
@@ -216,8 +224,10 @@ void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, cons
             const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
             const double un = u.dot(m.normal);
             if (!(un < 0.0)) continue;
-            if (resting[k] != 0 && -un <= resting_speed) continue;
-            const double e = -un < settings_.restitution_threshold ? 0.0 : m.restitution;
+            // A resting contact's slow approach is stopped plastically (no micro-bounce); it must
+            // still be stopped now: the contact phase only fixes the end of the step.
+            const bool plastic = -un < settings_.restitution_threshold || (resting[k] != 0 && -un <= resting_speed);
+            const double e = plastic ? 0.0 : m.restitution;
             const ImpulseResult r =
                 settings_.response == ResponseModel::Vroc1995
                     ? vroc1995Impulse(a, b, m.centroid, m.normal, e)

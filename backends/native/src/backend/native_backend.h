@@ -100,6 +100,9 @@ private:
     /// possible contact), or the protection tick of a touching pair that the solve did not cover.
     /// `solved`: the pair's manifolds went through this step's contact phase.
     void scheduleSampled(const PairSample& s, double t, bool solved);
+    /// [s] for a free sphere leaving a static body it touches: the time until it is clear of
+    /// touching (then the contact time refinement takes over); -1 for any other pair.
+    double bouncingSphereRecheck(const PairSample& s, double t) const;
     /// [s] the earliest island tick (cached; recomputed after ticks or the touching set changed).
     double nextTick();
     void setTick(int body, double time) {
@@ -112,8 +115,8 @@ private:
     /// came): their touching pairs are sampled too, then the collision phase, the contact phase per
     /// island and the drifts; every sample is then scheduled.
     void solveIslands(std::vector<PairSample>& samples, double t);
-    /// Restitution and friction impulses at approaching manifolds; a `resting` one (touching at its
-    /// last solve) approaching slower than `resting_speed` [m/s] is left to the contact phase.
+    /// Restitution and friction impulses at approaching manifolds; a `resting` one (held at its
+    /// last solve) approaching slower than `resting_speed` [m/s] is stopped plastically (e = 0).
     void collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
                         double resting_speed);
     void emitEvents(const std::vector<PairSample>& samples, double t);

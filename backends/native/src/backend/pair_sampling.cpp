@@ -22,6 +22,9 @@ constexpr double kTouchingMinAllowance = 0.125;
 // A pair its island's contact phase holds may close to this (a penetration of half the collision
 // distance at worst, repaired by the next solve's position pass; deeper is an emergency).
 constexpr double kSolvedFloor = -0.5;
+// A bouncing sphere is looked at again once its gap exceeds this fraction of the pair's size (1000x
+// the refinement's touching gap, so the refinement takes it).
+constexpr double kRecheckGapPerSize = 1e-6;
 // Shortest interval between solves of an island held by its last solve, as a fraction of its tick.
 constexpr double kHeldMinTick = 1.0 / 16.0;
 
@@ -175,6 +178,22 @@ void NativeBackend::recordSamples(const std::vector<PairSample>& samples) {
     }
 }
 
+double NativeBackend::bouncingSphereRecheck(const PairSample& s, double t) const {
+    const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+    const bool a_static = is_static_[static_cast<std::size_t>(ps.a)], b_static = is_static_[static_cast<std::size_t>(ps.b)];
+    if (a_static == b_static || ps.placed_in_window) return -1.0;   // placed resting: no refinement
+    const int sphere = a_static ? ps.b : ps.a;
+    const BodyShape& sh = shapes_[static_cast<std::size_t>(sphere)];
+    if (sh.parts.size() != 1 || !sh.parts[0].is_sphere) return -1.0;
+    if (drift_until_[static_cast<std::size_t>(sphere)] > t) return -1.0;   // held by the contact phase
+    // Normal speed away from the static body (a sphere's spin adds nothing along the normal).
+    const double away = (a_static ? 1.0 : -1.0) * bodies_[static_cast<std::size_t>(sphere)].velocity.dot(s.normal);
+    if (!(away > 0.0)) return -1.0;
+    const double clear = kRecheckGapPerSize * (sh.outer_radius + shapes_[static_cast<std::size_t>(a_static ? ps.a : ps.b)].outer_radius);
+    if (!(s.distance < clear)) return -1.0;
+    return (clear - s.distance) / away;
+}
+
 void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) {
     PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
     const double cd = scene_.collision_distance;
@@ -218,6 +237,11 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
                                     : g.distance - kApproachTarget * cd);
         bound = std::min(bound, earliestCollisionTime(allowed, g.normal, ma, mb, bound));
     }
+    // A sphere that just bounced off a static body flies freely inside the window: it is looked at
+    // again as soon as it is clear of touching, so that the contact time refinement (deferImpacts)
+    // takes it from there and meets its next impact at touching, exactly (issue 4's bounce apexes
+    // and rest time), instead of a protection bound letting it sink into the floor.
+    if (const double rise = bouncingSphereRecheck(s, t); rise >= 0.0) bound = std::min(bound, rise);
     // A held pair already at its floor does not call for another solve at once (the one that just
     // ran is repairing it): the next comes after a fraction of the tick at the earliest. This
     // keeps a squeezed body from freezing time in zero-length steps.

@@ -336,8 +336,8 @@ void warmStart(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, std:
     }
 }
 
-// Split impulse: pseudo-velocities, separate from the real ones, push patches whose gap would end
-// the step below the floor back towards the target gap; the result is a displacement per body.
+// Split impulse: pseudo-velocities, separate from the real ones, push patches whose gap is below the
+// floor back towards the target gap; the result is a displacement per body.
 // One constraint per patch at its centroid.
 int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies,
                  const std::vector<Patch>& patches, const std::vector<ContactManifold>& manifolds, double h,
@@ -361,9 +361,10 @@ int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies
     int below = 0;
     for (const Patch& p : patches) {
         const ContactManifold& mf = manifolds[static_cast<std::size_t>(p.friction.manifold)];
-        // The gap reached by the step end (bodies move with the mean of start and solved velocity).
-        const double un_end = relativeVelocity(wb, p.friction).dot(p.friction.n);
-        const double reached = mf.distance + 0.5 * (p.friction.start_speed + un_end) * h;
+        // Only penetration that is there now: an approach is the velocity sweeps' job, and a body
+        // that is not held (a ball bouncing in the window) is met by its pair's next event. Pushing
+        // on a predicted gap would lift a bouncing ball at every bounce and keep it bouncing.
+        const double reached = mf.distance;
         if (reached < settings.correction_floor) ++below;
         // Shock propagation for positions: the body nearer the static ground (lower level) is
         // frozen, so a push lifts the upper body and never drives the lower one into the floor.
