@@ -7,7 +7,7 @@ PACKAGES := cmake ninja-build g++ make pkg-config git ca-certificates \
   libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test test-long bench clean
+.PHONY: all deps configure build demo test test-long bench bench-dense clean
 
 all: build
 
@@ -38,6 +38,12 @@ test-long: build
 
 bench: build
 	@scripts/bench.sh $(BUILD_DIR)
+
+# Dense contact (issue 9): stress scenes on native and Bullet (1 and 4 sub-steps), then scaling.
+bench-dense: build
+	python3 scripts/dense_contact_bench.py --build $(BUILD_DIR) --duration 4 --repeats 3 --out runs/dense-contact \
+	  --scenes plank stack20_ratio10 pyramid10 pyramid20 pyramid30 simbenchmark666 bin_spheres100 bin_boxes100 bin_hulls100 bin_spheres400
+	python3 scripts/dense_contact_bench.py --build $(BUILD_DIR) --scaling --duration 2 --repeats 1 --out runs/dense-contact-scaling
 
 clean:
 	rm -rf $(BUILD_DIR)
