@@ -13,6 +13,8 @@ namespace vroc::native {
 namespace {
 
 constexpr int kUnreached = 1 << 30;
+// Manifolds from which an island counts as large for the cold-start sweeps.
+constexpr std::size_t kLargeIsland = 16;
 
 // The effective-mass terms depend only on the step's geometry and on which side is frozen, not on
 // the working velocities, so they are computed once per (constraint, freeze state) and reused by
@@ -462,7 +464,18 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
             for (auto& c : cs) relaxPlastic(wb, c, report.ill_conditioned);
         }
     } else {
-        for (int it = 0; it < settings.iterations; ++it) {
+        // A large cold island (most patches without impulses to start from: the first solve of a
+        // pile) gets more sweeps: warm starting cannot help it yet, and what this solve leaves
+        // unconverged is the settling a pile keeps for ever. Small islands converge in the usual
+        // sweeps, and in a bin they form all the time.
+        std::size_t cold = 0;
+        for (const auto& mf : manifolds)
+            if (!settings.warm_start || mf.point_impulse.empty() ||
+                std::all_of(mf.point_impulse.begin(), mf.point_impulse.end(), [](double x) { return x == 0.0; }))
+                ++cold;
+        const bool large_cold = manifolds.size() >= kLargeIsland && 2 * cold > manifolds.size();
+        const int sweeps = large_cold ? settings.cold_factor * settings.iterations : settings.iterations;
+        for (int it = 0; it < sweeps; ++it) {
             for (auto& p : patches) relaxPatch(wb, cs, p, false, false);
         }
         if (settings.shock_iterations > 0) {

@@ -20,6 +20,7 @@ enum class ResponseModel { Vroc1995, NewtonCoulomb };
 
 struct ContactSolverSettings {
     int iterations = 20;          ///< Gauss-Seidel sweeps over all contact points
+    int cold_factor = 10;         ///< sweeps x this for a large island whose manifolds are mostly cold
     int shock_iterations = 8;     ///< sweeps per level during shock propagation (0 = off)
     ResponseModel model = ResponseModel::NewtonCoulomb;
     bool warm_start = true;       ///< start from the manifolds' previous impulses
