@@ -23,6 +23,14 @@ void addStack(Scene& s, int mat, double x, int n, double cd, double mass_odd = 1
     }
 }
 
+// A floor and the piles' material (e = 0, mu = 0.6).
+Scene restingScene(double cd, int& mat) {
+    Scene s = emptyScene(cd);
+    mat = addMaterial(s, 0.0, 0.6);
+    addFloor(s, mat);
+    return s;
+}
+
 bool sameBits(const BodyState& a, const BodyState& b) {
     return std::memcmp(a.pose.position.data(), b.pose.position.data(), sizeof(double) * 3) == 0 &&
            std::memcmp(a.pose.orientation.coeffs().data(), b.pose.orientation.coeffs().data(), sizeof(double) * 4) == 0 &&
@@ -62,9 +70,8 @@ TEST(NativeIslands, AnImpactElsewhereLeavesAnIslandBitIdentical) {
 
 TEST(NativeIslands, RestingPileIsSolvedOncePerTick) {
     const double cd = 1e-3;
-    Scene s = emptyScene(cd);
-    const int mat = addMaterial(s, 0.0, 0.6);
-    addFloor(s, mat);
+    int mat = -1;
+    Scene s = restingScene(cd, mat);
     addStack(s, mat, 0.0, 6, cd);
     addStack(s, mat, 2.0, 6, cd);
     for (int substeps : {1, 4}) {
@@ -84,9 +91,8 @@ TEST(NativeIslands, RestingPileIsSolvedOncePerTick) {
 TEST(NativeIslands, MassRatioStackHolds) {
     // 20 boxes alternating 1 kg and 10 kg (the 1:10 stack): 10 s, top drift <= 1 cm.
     const double cd = 1e-3;
-    Scene s = emptyScene(cd);
-    const int mat = addMaterial(s, 0.0, 0.6);
-    addFloor(s, mat);
+    int mat = -1;
+    Scene s = restingScene(cd, mat);
     addStack(s, mat, 0.0, 20, cd, 10.0);
     const int top = static_cast<int>(s.bodies.size()) - 1;
     auto be = makeBackend(s);
@@ -150,17 +156,10 @@ TEST(NativeIslands, IslandBuilderMatchesBruteForceComponents) {
     }
 }
 
-}  // namespace
-}  // namespace vroc::native::test
-
-namespace vroc::native::test {
-namespace {
-
 TEST(NativeIslands, SleepingIsOffByDefaultAndAPileSleepsAndWakes) {
     const double cd = 1e-3;
-    Scene s = emptyScene(cd);
-    const int mat = addMaterial(s, 0.0, 0.6);
-    addFloor(s, mat);
+    int mat = -1;
+    Scene s = restingScene(cd, mat);
     addStack(s, mat, 0.0, 4, cd);
     const int ball = addBody(s, "ball", Shape::sphere(0.1), at(Vec3(0, 0, 6.0)), mat, false, 1.0);
     // Off by default: the pile is solved at every tick.
@@ -178,7 +177,9 @@ TEST(NativeIslands, SleepingIsOffByDefaultAndAPileSleepsAndWakes) {
         be->stepFrame(s.frame_dt);
         const double solves = be->statistics().at("contact_solves");
         if (f == 45) solves_asleep = solves;
-        if (f > 45 && f < 50) EXPECT_EQ(solves, solves_asleep) << "frame " << f;   // asleep, ball still falling
+        if (f > 45 && f < 50) {
+            EXPECT_EQ(solves, solves_asleep) << "frame " << f;   // asleep, ball still falling
+        }
         if (!be->takeEvents().empty() && f > 45) woke = true;
     }
     EXPECT_GE(be->statistics().at("islands_slept"), 1.0);

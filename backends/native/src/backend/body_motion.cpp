@@ -129,10 +129,9 @@ void NativeBackend::maybeSleep(const std::vector<int>& island, double t) {
         rb.velocity.setZero();
         rb.angular_momentum.setZero();
         rb.refreshEnergy();
-        drift_until_[i] = t;
         asleep_[i] = 1;
         setTick(body, kNever);
-        bumpVersion(body);
+        endDrift(body);
     }
     ++stats_.islands_slept;
 }

@@ -186,8 +186,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             if (is->impulses[k].supported) {
                 startDrift(body, is->impulses[k], t, h);
             } else if (drift_until_[static_cast<std::size_t>(body)] > t) {
-                drift_until_[static_cast<std::size_t>(body)] = t;   // the old contact force is gone
-                bumpVersion(body);
+                endDrift(body);   // the old contact force is gone
             }
             setTick(body, t + h);
         }
@@ -242,11 +241,8 @@ void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, cons
             a.applyImpulse(-r.impulse, m.centroid);
             b.applyImpulse(r.impulse, m.centroid);
             // The old drift was for the old velocity: the bodies fly from now until the solve.
-            for (int body : {m.body_a, m.body_b}) {
-                if (is_static_[static_cast<std::size_t>(body)]) continue;
-                drift_until_[static_cast<std::size_t>(body)] = valid_at_[static_cast<std::size_t>(body)];
-                bumpVersion(body);
-            }
+            for (int body : {m.body_a, m.body_b})
+                if (!is_static_[static_cast<std::size_t>(body)]) endDrift(body);
             m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
             any = true;
         }

@@ -61,9 +61,8 @@ void NativeBackend::setBodyState(int body, const BodyState& state) {
         return;
     }
     rb.setFromState(state.pose, state.linear_velocity, state.angular_velocity);
-    drift_until_[static_cast<std::size_t>(body)] = time_;   // the drift was for the old state
     wake(body);
-    bumpVersion(body);
+    endDrift(body);   // the drift was for the old state
 }
 
 void NativeBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) {
@@ -74,9 +73,8 @@ void NativeBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& worl
         return;
     }
     rb.applyImpulse(impulse, world_point);
-    drift_until_[static_cast<std::size_t>(body)] = time_;
     wake(body);
-    bumpVersion(body);
+    endDrift(body);
 }
 
 std::vector<CollisionEvent> NativeBackend::takeEvents() {
@@ -191,8 +189,7 @@ void NativeBackend::recoverIfNonFinite(int body, const RigidBody& saved) {
     rb.velocity.setZero();
     rb.angular_momentum.setZero();
     rb.refreshEnergy();
-    drift_until_[static_cast<std::size_t>(body)] = valid_at_[static_cast<std::size_t>(body)];
-    bumpVersion(body);
+    endDrift(body);
 }
 
 }  // namespace vroc::native

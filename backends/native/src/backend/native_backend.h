@@ -120,9 +120,10 @@ private:
     void collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
                         double resting_speed);
     void emitEvents(const std::vector<PairSample>& samples, double t);
-    /// Impacts are resolved at touching, not at the window gap: shortens the step `h` [s] from `t` [s]
-    /// to the refined contact time and clears those samples' manifolds (scheduling/impact_deferral.cpp).
-    double deferImpacts(std::vector<PairSample>& samples, double t, double h);
+    /// Impacts are resolved at touching, not at the window gap: a free sphere meeting a static body
+    /// inside the window gets its refined touching time (within `horizon` [s] of `t`) as its pair's
+    /// contact_time, and its manifolds are cleared until then (scheduling/impact_deferral.cpp).
+    void deferImpacts(std::vector<PairSample>& samples, double t, double horizon);
     void separatePenetrating(const PairSample& s);
 
     // --- bodies (body_motion.cpp) ---
@@ -141,6 +142,12 @@ private:
     void wake(int body) {
         asleep_[static_cast<std::size_t>(body)] = 0;
         still_since_[static_cast<std::size_t>(body)] = valid_at_[static_cast<std::size_t>(body)];
+    }
+    /// The body's velocity was changed outside its drift (an impulse, a new state, a solve that no
+    /// longer holds it): it flies freely from its valid time on, and its pairs are bounded again.
+    void endDrift(int body) {
+        drift_until_[static_cast<std::size_t>(body)] = valid_at_[static_cast<std::size_t>(body)];
+        bumpVersion(body);
     }
     void bumpVersion(int body) {
         ++versions_[static_cast<std::size_t>(body)];

@@ -180,7 +180,8 @@ struct Patch {
     // Per freeze state (see freezeKey): the factorised normal block and the friction mass.
     // The minimum-norm inverse of the normal block (manifolds keep <= 4 points): fixed size, so a
     // relaxation is one small product and allocates nothing.
-    std::array<Eigen::Matrix4d, 4> block;
+    std::array<Eigen::Matrix4d, 4> block{Eigen::Matrix4d::Zero(), Eigen::Matrix4d::Zero(), Eigen::Matrix4d::Zero(),
+                                         Eigen::Matrix4d::Zero()};
     std::array<bool, 4> block_cached{};
     std::array<TangentMass, 4> tangent;
 };
@@ -491,9 +492,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         if (rb.is_static) continue;
         const Vec3 dv = wb[i].v - predicted[i].v;
         const Vec3 dw = wb[i].w - predicted[i].w;
-        if (dv.isZero(0.0) && dw.isZero(0.0) && impulses[i].displacement.isZero(0.0) &&
-            impulses[i].rotation.isZero(0.0))
-            continue;
+        if (dv.isZero(0.0) && dw.isZero(0.0) && impulses[i].displacement.isZero(0.0)) continue;
         impulses[i].linear = dv / rb.inv_mass;
         const Mat3 r = rb.rotation();
         impulses[i].angular = r * rb.inertia_body * r.transpose() * dw;

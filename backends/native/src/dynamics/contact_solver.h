@@ -38,7 +38,7 @@ struct BodyImpulse {
     Vec3 angular = Vec3::Zero();   ///< [N m s] sum of (p - com) x impulse, world
     bool supported = false;        ///< a contact impulse acted on the body this step
     Vec3 displacement = Vec3::Zero();   ///< [m] split-impulse position correction of the COM, world
-    Vec3 rotation = Vec3::Zero();       ///< [rad] split-impulse rotation vector, world
+                                        ///< (translation only: see positionPass)
 };
 
 struct ContactSolverReport {

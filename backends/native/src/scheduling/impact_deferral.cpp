@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // NativeBackend::deferImpacts (declared in backend/native_backend.h; kept here with the contact
 // time refinement it drives, scheduling/contact_time_refinement.h). A pair inside the collision
-// window but not touching (gap > gap_max) is not resolved at the window gap: the step is shortened
-// to the refined touching time and the impulse is applied at the next step start, at a gap in
-// [0, gap_max]. Until then the pair has no manifold (no collision or contact impulse).
+// window but not touching (gap > gap_max) is not resolved at the window gap: its pair is queried
+// again at the refined touching time, and the impulse is applied then, at a gap in [0, gap_max].
+// Until then the pair has no manifold (no collision or contact impulse).
 #include <algorithm>
 #include <vector>
 
@@ -17,7 +17,7 @@ namespace {
 constexpr double kTouchingGapPerSize = 1e-9;
 }  // namespace
 
-double NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, double h) {
+void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, double horizon) {
     // A body in contact with two pairs does not fly freely: its impacts are resolved as before.
     std::vector<int> touches(bodies_.size(), 0);
     for (const PairSample& s : samples) {
@@ -29,9 +29,9 @@ double NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, d
     auto freeBody = [&](int body) {
         return bodies_[static_cast<std::size_t>(body)].is_static || touches[static_cast<std::size_t>(body)] == 1;
     };
-    // Only a single sphere against a real (static) body for now: after an impact at ~0 gap,
-    // contactBoundedStep still lets a touching pair close by kTouchingMinAllowance (1/8 of the
-    // collision distance), so a hull whose bounce spins another vertex down would penetrate
+    // Only a single sphere against a real (static) body for now: after an impact at ~0 gap, a
+    // touching pair's protection bound (scheduleSampled) still lets it close by 1/8 of the
+    // collision distance, so a hull whose bounce spins another vertex down would penetrate
     // (NativeRest.DroppedHullComesToRestWithinCollisionDistance). A sphere on a static body has a
     // single contact point that the bounce moves straight away.
     auto sphereOnStatic = [&](int sphere, int other) {
@@ -62,17 +62,16 @@ double NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, d
         for (const PairSample::PartGap& g : s.parts) now.push_back({g.distance, g.normal});
         const RefineResult r =
             refineContactTime(flightGaps(a, sa, b, sb, ps.caches, scene_.gravity, t), now, ballisticBound(ps.a),
-                              ballisticBound(ps.b), t, t + h, gap_max);
+                              ballisticBound(ps.b), t, t + horizon, gap_max);
         stats_.narrow_queries += static_cast<std::int64_t>(r.queries * sa.parts.size() * sb.parts.size());
         if (r.state == RefineState::Failed) continue;
         // Clear: no touching within this step (its horizon may be a rounding sliver of a frame):
-        // the sphere just flies on. Otherwise the step ends at the refined time.
-        s.contact_time = r.state == RefineState::Clear ? t + h : r.time;
+        // the sphere just flies on. Otherwise its pair is due again at the refined time.
+        s.contact_time = r.state == RefineState::Clear ? t + horizon : r.time;
         s.manifolds.clear();
         s.manifold_part.clear();
         s.deferred = true;
     }
-    return h;
 }
 
 }  // namespace vroc::native
