@@ -1,9 +1,9 @@
 """Scenes the dense-contact work was not tuned on (issue 9 review): new seeds of the generated bins,
 a box/sphere mix, a 1:100 stack and a base-15 pyramid with friction 0.4. Not committed as scene
-files: `python3 scenes/stress/make_untuned_variants.py OUT_DIR` writes them (run from scenes/stress).
+files: `python3 scenes/stress/make_untuned_variants.py OUT_DIR` writes them.
 """
 import json, os, sys
-sys.path.insert(0, '.')
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import generate_stress as g
 out = sys.argv[1] if len(sys.argv) > 1 else 'runs/untuned/'
 os.makedirs(out, exist_ok=True)
