@@ -6,6 +6,7 @@ For every stress scene and every backend configuration
     native    vroc run ... --backend native --set native.threads=1   (one core, like Bullet)
     bullet    vroc run ... --backend bullet --set bullet.substeps=1  (Bullet at its own default)
     bullet4   vroc run ... --backend bullet --set bullet.substeps=4  (the project's 4 sub-steps)
+    bullet16  vroc run ... --backend bullet --set bullet.substeps=16 (for the equal-accuracy table)
 
 it runs `vroc run SCENE --duration D` --repeats times (medians are reported) and measures
 
@@ -23,11 +24,15 @@ it runs `vroc run SCENE --duration D` --repeats times (medians are reported) and
   `--no-penetration` skips it;
 - from trajectory.csv of the first repeat: the largest displacement of any body from its start at
   the end (pyramids: the "every box within 1 mm" target), the drift of the body that starts highest
-  (largest distance from its start over the run: the stack's top box), and stillness at the end:
+  (largest distance from its start over the run: the stack's top box), the creep (largest
+  displacement of any body between t = 1 s and the end: what is left once the placement gaps have
+  closed, the pyramid's and stack's accuracy), and stillness at the end:
   translational kinetic energy sum(m v^2 / 2) and the largest speed bound |v| + |w| r_bound.
 
 Writes OUT/dense_contact.csv and OUT/dense_contact.md (a Markdown table plus the issue-9 targets
-judged for native). `--scaling` instead runs scenes/stress/scaling_boxes{100,400,1000,4000}.json
+judged for native, and the equal-accuracy table: the cheapest Bullet configuration whose creep
+(scenes that start at rest) or deepest penetration (the others) is no worse than native's).
+`--scaling` instead runs scenes/stress/scaling_boxes{100,400,1000,4000}.json
 and writes OUT/scaling.csv (backend,bodies,wall_per_sim_s) and OUT/scaling.svg (log-log, gnuplot,
 with an N log N guide line).
 
@@ -36,7 +41,7 @@ run that takes longer is stopped (SIGTERM, then SIGKILL) and shows as "timeout".
 simulation runs at a time.
 
 Usage:
-  python3 scripts/dense_contact_bench.py [--scenes NAME ...] [--backends native,bullet,bullet4]
+  python3 scripts/dense_contact_bench.py [--scenes NAME ...] [--backends native,bullet,bullet4,bullet16]
         [--repeats 3] [--duration 10] [--timeout 120] [--compare-timeout S] [--max-bodies N] [--no-penetration]
         [--out DIR] [--vroc PATH | --build DIR] [--keep-runs]
   python3 scripts/dense_contact_bench.py --scaling [--duration 2] [--out DIR] ...
@@ -63,7 +68,10 @@ CONFIGS = {
     "native": ("native", ["native.threads=1"], "native (threads=1)"),
     "bullet": ("bullet", ["bullet.substeps=1"], "bullet (substeps=1)"),
     "bullet4": ("bullet", ["bullet.substeps=4"], "bullet (substeps=4)"),
+    "bullet16": ("bullet", ["bullet.substeps=16"], "bullet (substeps=16)"),
 }
+CREEP_FROM = 1.0          # [s] creep = largest displacement of any body between this time and the end
+EQUAL_ACCURACY_FLOOR = 1e-3   # [m] creeps below this count as equal (the pyramid target's 1 mm)
 # Cheapest first, so a short run still covers most scenes.
 DEFAULT_SCENES = ["plank", "stack20_ratio10", "pyramid10", "bin_spheres100", "bin_boxes100", "bin_hulls100",
                   "simbenchmark666", "pyramid20", "bin_spheres400", "pyramid30", "bin_spheres1000",
@@ -180,6 +188,7 @@ def trajectory_metrics(path, scene):
     """From trajectory.csv: max displacement of any body at the end, drift (max over the run) of
     the body that starts highest, final translational KE and final max speed bound."""
     first, last, drift = {}, {}, 0.0
+    settled = {}   # first row at or after CREEP_FROM
     top = scene.top_body
     with open(path) as f:
         header = f.readline().rstrip("\n").split(",")
@@ -192,6 +201,8 @@ def trajectory_metrics(path, scene):
                 name = row[ix["body"]]
             if name not in first:
                 first[name] = row
+            if name not in settled and float(row[ix["t"]]) >= CREEP_FROM - 1e-9:
+                settled[name] = row
             last[name] = row
             if name == top:
                 p0 = first[name]
@@ -199,6 +210,8 @@ def trajectory_metrics(path, scene):
                 drift = max(drift, d)
     disp = max((math.dist([float(last[n][ix[c]]) for c in "xyz"], [float(first[n][ix[c]]) for c in "xyz"])
                 for n in first), default=0.0)
+    creep = max((math.dist([float(last[n][ix[c]]) for c in "xyz"], [float(settled[n][ix[c]]) for c in "xyz"])
+                 for n in settled), default=math.nan)
     ke, speed = 0.0, 0.0
     for n, row in last.items():
         v = [float(row[ix[c]]) for c in ("vx", "vy", "vz")]
@@ -206,7 +219,7 @@ def trajectory_metrics(path, scene):
         vv = math.sqrt(sum(c * c for c in v))
         ke += 0.5 * scene.mass.get(n, 0.0) * vv * vv
         speed = max(speed, vv + math.sqrt(sum(c * c for c in w)) * scene.radius.get(n, 0.0))
-    return {"disp_end_m": disp, "top_drift_m": drift, "final_ke_J": ke, "final_max_speed": speed}
+    return {"disp_end_m": disp, "creep_m": creep, "top_drift_m": drift, "final_ke_J": ke, "final_max_speed": speed}
 
 
 def measure(args, scene, label, work):
@@ -263,7 +276,7 @@ def measure(args, scene, label, work):
 CSV_COLUMNS = ["scene", "backend", "settings", "bodies", "duration_s", "steps", "repeats", "status",
                "total_step_s", "median_step_us", "worst_step_us", "worst_over_median", "wall_per_sim_s",
                "warnings", "penetration_recovered", "max_penetration_m", "deterministic",
-               "disp_end_m", "top_drift_m", "final_ke_J", "final_max_speed"]
+               "disp_end_m", "creep_m", "top_drift_m", "final_ke_J", "final_max_speed"]
 
 
 def fmt(v, spec):
@@ -324,6 +337,38 @@ def targets(rows, scenes):
     return out
 
 
+def starts_at_rest(scene):
+    return scene.name.startswith(("pyramid", "stack", "scaling_"))
+
+
+def equal_accuracy(rows, scenes):
+    """Per scene: (scene, measure, native value, native total, cheapest Bullet label or None, its value,
+    its total) where the Bullet configuration's value <= max(native's, EQUAL_ACCURACY_FLOOR)."""
+    by = {(r["scene"], r["backend"]): r for r in rows}
+    out = []
+    for sc in scenes:
+        n = by.get((sc.name, "native"))
+        if not n or n.get("total_step_s") is None:
+            continue
+        key, name = ("creep_m", "creep") if starts_at_rest(sc) else ("max_penetration_m", "deepest penetration")
+        nval = n.get(key)
+        if not isinstance(nval, float) or math.isnan(nval):
+            continue
+        bar = max(nval, EQUAL_ACCURACY_FLOOR)
+        cands = [r for (s_, lab), r in by.items() if s_ == sc.name and lab.startswith("bullet")
+                 and r.get("total_step_s") is not None and isinstance(r.get(key), float) and r[key] <= bar]
+        if cands:
+            best = min(cands, key=lambda r: r["total_step_s"])
+            out.append((sc.name, name, nval, n["total_step_s"], best["backend"], best[key], best["total_step_s"], True))
+            continue
+        tried = [r for (s_, lab), r in by.items() if s_ == sc.name and lab.startswith("bullet")
+                 and isinstance(r.get(key), float)]
+        best = min(tried, key=lambda r: r[key]) if tried else None
+        out.append((sc.name, name, nval, n["total_step_s"], best["backend"] if best else None,
+                    best[key] if best else None, best.get("total_step_s") if best else None, False))
+    return out
+
+
 def write_markdown(path, rows, scenes, args):
     lines = [f"# Dense contact: native vs Bullet (issue 9)", "",
              f"`{' '.join(sys.argv)}` — {args.duration:g} s simulated per run, median of {args.repeats} run(s), "
@@ -332,9 +377,10 @@ def write_markdown(path, rows, scenes, args):
              "distance query (`vroc compare`); disp@end = largest body displacement from its start at the end; "
              "top drift = largest distance from its start of the body starting highest; speed = max |v| + |w| r "
              "at the end.", "",
+             f"creep = largest displacement of any body between t = {CREEP_FROM:g} s and the end.", "",
              "| scene | backend | total [s] | vs bullet | p50 [ms] | worst [ms] | worst/p50 | pen [mm] | "
-             "pen. recovered | warnings | disp@end [mm] | top drift [mm] | KE end [J] | speed end [m/s] |",
-             "|---|---|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|--:|--:|"]
+             "pen. recovered | warnings | disp@end [mm] | creep [mm] | top drift [mm] | KE end [J] | speed end [m/s] |",
+             "|---|---|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|--:|--:|--:|"]
     by = {(r["scene"], r["backend"]): r for r in rows}
     for sc in scenes:
         for label in args.backend_list:
@@ -342,7 +388,7 @@ def write_markdown(path, rows, scenes, args):
             if r is None:
                 continue
             if r["status"] != "ok" and r["repeats"] == 0:
-                lines.append(f"| {sc.name} | {label} | {r['status']} | | | | | | | | | | | |")
+                lines.append(f"| {sc.name} | {label} | {r['status']} | | | | | | | | | | | | |")
                 continue
             b = by.get((sc.name, "bullet"))
             vs = r["total_step_s"] / b["total_step_s"] if b and b.get("total_step_s") else None
@@ -353,8 +399,25 @@ def write_markdown(path, rows, scenes, args):
                 fmt(r["median_step_us"] / 1e3, ".3f"), fmt(r["worst_step_us"] / 1e3, ".3f"),
                 fmt(r["worst_over_median"], ".1f"), pen_text, fmt(r["penetration_recovered"], "d"),
                 (r["warnings"] or "–").replace(";", ", "), fmt(r["disp_end_m"] * 1e3, ".3f"),
-                fmt(r["top_drift_m"] * 1e3, ".3f"), fmt(r["final_ke_J"], ".3g"), fmt(r["final_max_speed"], ".3g"),
+                fmt(r["creep_m"] * 1e3, ".3f"), fmt(r["top_drift_m"] * 1e3, ".3f"), fmt(r["final_ke_J"], ".3g"), fmt(r["final_max_speed"], ".3g"),
             ]) + " |")
+    equal = equal_accuracy(rows, scenes)
+    if equal:
+        lines += ["", "## At equal accuracy", "",
+                  "The cheapest Bullet configuration that is as accurate as native on the scene's own measure: "
+                  f"creep (after {CREEP_FROM:g} s) for scenes that start at rest, deepest penetration for the others; "
+                  f"values below {EQUAL_ACCURACY_FLOOR * 1e3:g} mm count as equal.", "",
+                  "| scene | measure | native | native total [s] | cheapest Bullet as accurate | its value | its total [s] | "
+                  "native / it |", "|---|---|--:|--:|---|--:|--:|--:|"]
+        for scene, measure_name, nval, ntot, blabel, bval, btot, reached in equal:
+            if reached:
+                who, ratio = CONFIGS[blabel][2], fmt(ntot / btot, ".2f")
+            else:   # no Bullet configuration got there: show its most accurate one
+                who = "none; most accurate: " + (CONFIGS[blabel][2] if blabel else "–")
+                ratio = "–"
+            lines.append("| " + " | ".join([
+                scene, measure_name, fmt(nval * 1e3, ".3f") + " mm", fmt(ntot, ".4g"), who,
+                fmt(bval * 1e3, ".3f") + " mm" if bval is not None else "–", fmt(btot, ".4g"), ratio]) + " |")
     judged = targets(rows, scenes)
     if judged:
         lines += ["", "## Issue 9 targets, judged for native", "", "| scene | target | native | met |", "|---|---|---|---|"]
@@ -419,7 +482,7 @@ def main():
                                  epilog="Backends: " + ", ".join(f"{k} = {v[2]}" for k, v in CONFIGS.items()))
     ap.add_argument("--scenes", nargs="+", metavar="NAME", help="scene names in scenes/stress/ or paths "
                     f"(default: {' '.join(DEFAULT_SCENES)}; with --scaling: the scaling_boxes series)")
-    ap.add_argument("--backends", default="native,bullet,bullet4", help="comma-separated, of: " + ", ".join(CONFIGS))
+    ap.add_argument("--backends", default="native,bullet,bullet4,bullet16", help="comma-separated, of: " + ", ".join(CONFIGS))
     ap.add_argument("--repeats", type=int, default=3, help="runs per scene and backend; medians reported (default 3)")
     ap.add_argument("--duration", type=float, default=None, help="simulated seconds per run (default 10; --scaling: 2)")
     ap.add_argument("--timeout", type=float, default=120.0, help="seconds per vroc run before it is stopped and "

@@ -114,7 +114,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
                              held(manifolds[m].body_b)
                          ? 1
                          : 0;
-    collisionPhase(manifolds, resting, scene_.gravity.norm() * h);
+    collisionPhase(manifolds, resting, scene_.gravity.norm() * h, h);
 
     // Contact phase, one solve per island (islands are independent: any worker, same bits).
     std::map<int, IslandSolve> by_root;
@@ -135,6 +135,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     solver.iterations = settings_.contact_iterations;
     solver.shock_iterations = settings_.shock_iterations;
     solver.warm_start = settings_.warm_start;
+    solver.tolerance = settings_.solver_tolerance;
     // Penetration (deeper than rounding: a patch placed exactly touching is left alone) is pushed
     // back into the window, to cd/4: then the normal comes from the exact closest features again,
     // not from the penetration query, and the band [0, cd/4] absorbs a resting pile's jitter.
@@ -164,6 +165,8 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     for (IslandSolve* is : work) {
         ++stats_.step_solves;
         stats_.contact_points += is->report.points;
+        stats_.contact_sweeps += is->report.sweeps;
+        stats_.shock_sweeps += is->report.shock_sweeps;
         stats_.position_corrections += is->report.corrected_patches;
         stats_.max_island_bodies = std::max<std::int64_t>(stats_.max_island_bodies, static_cast<std::int64_t>(is->bodies.size()));
         if (is->report.ill_conditioned > 0) warn("ill_conditioned_solve", static_cast<std::uint64_t>(is->report.ill_conditioned));
@@ -213,7 +216,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
 }
 
 void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
-                                   double resting_speed) {
+                                   double resting_speed, double tick) {
     for (int sweep = 0; sweep < settings_.collision_iterations; ++sweep) {
         bool any = false;
         for (std::size_t k = 0; k < manifolds.size(); ++k) {
@@ -223,8 +226,11 @@ void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, cons
             const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
             const double un = u.dot(m.normal);
             if (!(un < 0.0)) continue;
-            // A resting contact's slow approach is stopped plastically (no micro-bounce); it must
-            // still be stopped now: the contact phase only fixes the end of the step.
+            // A resting contact's slow approach is stopped with e = 0 (no micro-bounce). If the
+            // gap outlasts it (the contact phase stops it by the end of the tick, so the gap
+            // closes by at most |un| h / 2) it is left to the contact phase's block solve: a
+            // pile's residual approaches, handled here one centroid at a time, would rock it.
+            if (resting[k] != 0 && -un <= resting_speed && -un * tick <= m.distance) continue;
             const bool plastic = -un < settings_.restitution_threshold || (resting[k] != 0 && -un <= resting_speed);
             const double e = plastic ? 0.0 : m.restitution;
             const ImpulseResult r =

@@ -116,9 +116,10 @@ private:
     /// island and the drifts; every sample is then scheduled.
     void solveIslands(std::vector<PairSample>& samples, double t);
     /// Restitution and friction impulses at approaching manifolds; a `resting` one (held at its
-    /// last solve) approaching slower than `resting_speed` [m/s] is stopped plastically (e = 0).
+    /// last solve) approaching slower than `resting_speed` [m/s] is stopped plastically (e = 0),
+    /// or left to the contact phase if its gap outlasts the tick `tick` [s] at that speed.
     void collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
-                        double resting_speed);
+                        double resting_speed, double tick);
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Impacts are resolved at touching, not at the window gap: a free sphere meeting a static body
     /// inside the window gets its refined touching time (within `horizon` [s] of `t`) as its pair's

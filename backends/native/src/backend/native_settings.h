@@ -17,6 +17,7 @@ struct NativeSettings {
     int collision_iterations = 5;           ///< collision-phase sweeps over touching pairs
     int contact_iterations = 20;            ///< contact-phase Gauss-Seidel sweeps
     int shock_iterations = 8;               ///< shock-propagation sweeps per level (0 = off)
+    double solver_tolerance = 0.0;          ///< [m/s] contact sweeps stop once a sweep changes no velocity more
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
     bool warm_start = true;                 ///< contact phase starts from the previous impulses
     bool sleeping = false;                  ///< islands at rest stop being simulated until touched

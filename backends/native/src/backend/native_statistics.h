@@ -22,6 +22,8 @@ struct NativeStatistics {
     std::int64_t collisions = 0;             ///< collision events
     std::int64_t contacts = 0;               ///< touching part pairs, summed over internal steps
     std::int64_t contact_points = 0;         ///< contact-phase points, summed over internal steps
+    std::int64_t contact_sweeps = 0;         ///< contact-phase sweeps run (they stop at the tolerance)
+    std::int64_t shock_sweeps = 0;           ///< shock-propagation sweeps run, summed over levels
     std::int64_t position_corrections = 0;   ///< patches the split-impulse pass pushed back to the window
     std::int64_t max_island_bodies = 0;      ///< bodies (static ones included) of the largest island solved
     std::int64_t islands_slept = 0;          ///< islands put to sleep (native.sleeping)
@@ -44,6 +46,10 @@ struct NativeStatistics {
         s["collisions"] = static_cast<double>(collisions);
         s["contacts"] = static_cast<double>(contacts);
         s["contact_points"] = static_cast<double>(contact_points);
+        s["contact_sweeps_per_solve"] =
+            static_cast<double>(contact_sweeps) / static_cast<double>(std::max<std::int64_t>(1, step_solves));
+        s["shock_sweeps_per_solve"] =
+            static_cast<double>(shock_sweeps) / static_cast<double>(std::max<std::int64_t>(1, step_solves));
         s["position_corrections"] = static_cast<double>(position_corrections);
         s["max_island_bodies"] = static_cast<double>(max_island_bodies);
         s["islands_slept"] = static_cast<double>(islands_slept);

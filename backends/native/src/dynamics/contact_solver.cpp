@@ -81,7 +81,9 @@ Mat3 pointMatrix(const WorkBody& a, const WorkBody& b, const PointConstraint& c,
 }
 
 // One projected Gauss-Seidel update of a point's normal impulse (accumulated, clamped >= 0).
-void relaxNormal(std::vector<WorkBody>& wb, PointConstraint& c, bool freeze_a, bool freeze_b) {
+// Each relaxation returns the change it made to its constraint's relative velocity [m/s]: the
+// sweeps stop once a whole sweep changes nothing by more than the tolerance.
+double relaxNormal(std::vector<WorkBody>& wb, PointConstraint& c, bool freeze_a, bool freeze_b) {
     const int key = freezeKey(freeze_a, freeze_b);
     if (!c.kn_cached[key]) {
         const Mat3 k = pointMatrix(wb[c.a], wb[c.b], c, freeze_a, freeze_b);
@@ -89,11 +91,13 @@ void relaxNormal(std::vector<WorkBody>& wb, PointConstraint& c, bool freeze_a, b
         c.kn_cached[key] = true;
     }
     const double kn = c.kn_cache[key];
-    if (!(kn > 0.0)) return;
+    if (!(kn > 0.0)) return 0.0;
     const double un = relativeVelocity(wb, c).dot(c.n);
     const double new_n = std::max(0.0, c.lambda_n + (c.target - un) / kn);
     applyPair(wb, c, (new_n - c.lambda_n) * c.n, freeze_a, freeze_b);
+    const double change = std::abs(new_n - c.lambda_n) * kn;
     c.lambda_n = new_n;
+    return change;
 }
 
 // Coulomb friction of a whole patch, applied at its centroid inside the circular cone of radius
@@ -101,14 +105,15 @@ void relaxNormal(std::vector<WorkBody>& wb, PointConstraint& c, bool freeze_a, b
 // normal split over the polygon is statically indeterminate, and per-point friction would turn an
 // uneven split into a spurious yaw torque (a sliding box would turn off its heading).
 struct TangentMass {
+    Eigen::Matrix2d mass = Eigen::Matrix2d::Zero();     // [1/kg] tangential block of K
     Eigen::Matrix2d inverse = Eigen::Matrix2d::Zero();  // [kg] inverse tangential effective mass
     bool valid = false;                                 // tangential block positive definite
     bool cached = false;
 };
 
-void relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const std::vector<PointConstraint>& cs,
-                   int first, int count, bool freeze_a, bool freeze_b, TangentMass& tm) {
-    if (f.mu <= 0.0) return;
+double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const std::vector<PointConstraint>& cs,
+                     int first, int count, bool freeze_a, bool freeze_b, TangentMass& tm) {
+    if (f.mu <= 0.0) return 0.0;
     double normal_sum = 0.0;
     for (int i = first; i < first + count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
     if (!tm.cached) {
@@ -116,10 +121,13 @@ void relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const std::vec
         Eigen::Matrix2d kt;
         kt << f.t1.dot(k * f.t1), f.t1.dot(k * f.t2), f.t2.dot(k * f.t1), f.t2.dot(k * f.t2);
         tm.valid = kt.determinant() > 0.0;
-        if (tm.valid) tm.inverse = kt.inverse();
+        if (tm.valid) {
+            tm.mass = kt;
+            tm.inverse = kt.inverse();
+        }
         tm.cached = true;
     }
-    if (!tm.valid) return;
+    if (!tm.valid) return 0.0;
     const Vec3 u = relativeVelocity(wb, f);
     const Eigen::Vector2d ut(u.dot(f.t1), u.dot(f.t2));
     Eigen::Vector2d cand = f.lambda_t - tm.inverse * ut;
@@ -129,6 +137,7 @@ void relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const std::vec
     const Eigen::Vector2d d = cand - f.lambda_t;
     applyPair(wb, f, d(0) * f.t1 + d(1) * f.t2, freeze_a, freeze_b);
     f.lambda_t = cand;
+    return (tm.mass * d).norm();
 }
 
 // Single-point plastic, sticking impulse at the centroid (the 1995 model's contact phase).
@@ -188,14 +197,14 @@ struct Patch {
 
 // Torsional (spin) friction of a polygon patch: a uniform pressure over a disc of radius a gives
 // a maximal friction torque (2/3) a mu N. Without it a box stopped on a table keeps a tiny spin.
-void relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint>& cs, Patch& p,
-                  bool freeze_a, bool freeze_b) {
+double relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint>& cs, Patch& p,
+                    bool freeze_a, bool freeze_b) {
     const PointConstraint& f = p.friction;
-    if (f.mu <= 0.0 || p.torsion_radius <= 0.0) return;
+    if (f.mu <= 0.0 || p.torsion_radius <= 0.0) return 0.0;
     WorkBody& a = wb[f.a];
     WorkBody& b = wb[f.b];
     const double k = (freeze_a ? 0.0 : f.n.dot(a.inv_inertia * f.n)) + (freeze_b ? 0.0 : f.n.dot(b.inv_inertia * f.n));
-    if (!(k > 0.0)) return;
+    if (!(k > 0.0)) return 0.0;
     double normal_sum = 0.0;
     for (int i = p.first; i < p.first + p.count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
     const double spin = (b.w - a.w).dot(f.n);
@@ -205,6 +214,15 @@ void relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint>&
     p.lambda_torsion = next;
     if (!freeze_a) a.w -= a.inv_inertia * (d * f.n);
     if (!freeze_b) b.w += b.inv_inertia * (d * f.n);
+    return std::abs(d) * k * p.torsion_radius;   // as a speed at the patch's rim
+}
+
+// The minimum-norm inverse of an N x N normal block, N = 2..4, in the top-left corner of `inv`:
+// fixed-size, so the decomposition unrolls and allocates nothing.
+template <int N>
+void pseudoInverseInto(const Eigen::Matrix4d& m, Eigen::Matrix4d& inv) {
+    const Eigen::Matrix<double, N, N> block = m.topLeftCorner<N, N>();
+    inv.topLeftCorner<N, N>() = Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix<double, N, N>>(block).pseudoInverse();
 }
 
 // All normal impulses of a patch at once: the minimum-norm increment that brings every point to
@@ -217,7 +235,7 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
     const int n = p.count;
     const WorkBody& a = wb[p.friction.a];
     const WorkBody& b = wb[p.friction.b];
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> m(n, n);
+    Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
     for (int i = 0; i < n; ++i) {
         const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
         for (int j = 0; j < n; ++j) {
@@ -230,11 +248,13 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
     }
     Eigen::Matrix4d& inv = p.block[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))];
     inv.setZero();
-    inv.topLeftCorner(n, n) = Eigen::CompleteOrthogonalDecomposition<decltype(m)>(m).pseudoInverse();
+    if (n == 2) pseudoInverseInto<2>(m, inv);
+    if (n == 3) pseudoInverseInto<3>(m, inv);
+    if (n == 4) pseudoInverseInto<4>(m, inv);
 }
 
 bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p,
-                      bool freeze_a, bool freeze_b) {
+                      bool freeze_a, bool freeze_b, double& change) {
     const int n = p.count;
     if (n < 2 || n > 4) return false;
     const auto key = static_cast<std::size_t>(freezeKey(freeze_a, freeze_b));
@@ -257,6 +277,7 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
     if (!x.allFinite()) return false;
     for (int i = 0; i < n; ++i)
         if (cs[static_cast<std::size_t>(p.first + i)].lambda_n + x(i) < 0.0) return false;
+    change = rhs.head(n).cwiseAbs().maxCoeff();   // the block removes each point's velocity error
     double total = 0.0;
     Vec3 moment_a = Vec3::Zero(), moment_b = Vec3::Zero();
     for (int i = 0; i < n; ++i) {
@@ -277,19 +298,21 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
     return true;
 }
 
-void relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p, bool freeze_a,
-                bool freeze_b) {
-    if (!relaxNormalBlock(wb, cs, p, freeze_a, freeze_b)) {
+// Returns the largest relative-velocity change the patch's relaxations made [m/s].
+double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p, bool freeze_a,
+                  bool freeze_b) {
+    double change = 0.0;
+    if (!relaxNormalBlock(wb, cs, p, freeze_a, freeze_b, change)) {
         for (int i = p.first; i < p.first + p.count; ++i)
-            relaxNormal(wb, cs[static_cast<std::size_t>(i)], freeze_a, freeze_b);
+            change = std::max(change, relaxNormal(wb, cs[static_cast<std::size_t>(i)], freeze_a, freeze_b));
     }
-    relaxFriction(wb, p.friction, cs, p.first, p.count, freeze_a, freeze_b,
-                  p.tangent[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))]);
-    relaxTorsion(wb, cs, p, freeze_a, freeze_b);
+    change = std::max(change, relaxFriction(wb, p.friction, cs, p.first, p.count, freeze_a, freeze_b,
+                                            p.tangent[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))]));
+    return std::max(change, relaxTorsion(wb, cs, p, freeze_a, freeze_b));
 }
 
-void shockPropagation(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs,
-                      std::vector<Patch>& patches, int sweeps) {
+int shockPropagation(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs,
+                     std::vector<Patch>& patches, int sweeps, double tolerance) {
     // Bodies not connected to a static one keep level kUnreached: the Gauss-Seidel result stands.
     // Patches are bucketed by level once (a level's sweeps touch only its own patches).
     std::vector<std::vector<Patch*>> by_level;
@@ -299,14 +322,19 @@ void shockPropagation(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
         if (by_level.size() <= static_cast<std::size_t>(level)) by_level.resize(static_cast<std::size_t>(level) + 1);
         by_level[static_cast<std::size_t>(level)].push_back(&p);
     }
+    int done = 0;
     for (std::size_t level = 1; level < by_level.size(); ++level) {
         for (int s = 0; s < sweeps; ++s) {
+            double change = 0.0;
             for (Patch* p : by_level[level]) {
                 const int la = wb[p->friction.a].level, lb = wb[p->friction.b].level;
-                relaxPatch(wb, cs, *p, la < static_cast<int>(level), lb < static_cast<int>(level));
+                change = std::max(change, relaxPatch(wb, cs, *p, la < static_cast<int>(level), lb < static_cast<int>(level)));
             }
+            ++done;
+            if (change <= tolerance) break;
         }
     }
+    return done;
 }
 
 // Applies the previous solve's accumulated impulses (same points, same order when the pair's
@@ -477,11 +505,14 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         const bool large_cold = manifolds.size() >= kLargeIsland && 2 * cold > manifolds.size();
         const int sweeps = large_cold ? settings.cold_factor * settings.iterations : settings.iterations;
         for (int it = 0; it < sweeps; ++it) {
-            for (auto& p : patches) relaxPatch(wb, cs, p, false, false);
+            double change = 0.0;
+            for (auto& p : patches) change = std::max(change, relaxPatch(wb, cs, p, false, false));
+            ++report.sweeps;
+            if (change <= settings.tolerance) break;
         }
         if (settings.shock_iterations > 0) {
             assignLevels(wb, bodies, cs);
-            shockPropagation(wb, cs, patches, settings.shock_iterations);
+            report.shock_sweeps = shockPropagation(wb, cs, patches, settings.shock_iterations, settings.tolerance);
         }
     }
     // Impulses per body, recovered from the velocity change (covers every pass above).

@@ -22,6 +22,9 @@ struct ContactSolverSettings {
     int iterations = 20;          ///< Gauss-Seidel sweeps over all contact points
     int cold_factor = 10;         ///< sweeps x this for a large island whose manifolds are mostly cold
     int shock_iterations = 8;     ///< sweeps per level during shock propagation (0 = off)
+    /// [m/s] sweeps (and each level's shock sweeps) stop early once no relaxation in a whole sweep
+    /// changed a contact's relative velocity by more than this; 0 runs every sweep.
+    double tolerance = 0.0;
     ResponseModel model = ResponseModel::NewtonCoulomb;
     bool warm_start = true;       ///< start from the manifolds' previous impulses
     /// Split-impulse position pass: a patch whose gap is below `correction_floor` [m] is pushed
@@ -45,6 +48,8 @@ struct ContactSolverReport {
     int points = 0;                ///< contact points solved
     int ill_conditioned = 0;       ///< single-point solves that fell back
     int corrected_patches = 0;     ///< patches below the correction floor (split impulse ran)
+    int sweeps = 0;                ///< Gauss-Seidel sweeps run over all patches
+    int shock_sweeps = 0;          ///< shock-propagation sweeps run (summed over levels)
 };
 
 /// Solves the contact phase for a step of `h` [s]. Bodies are read, not changed; the result is
