@@ -13,6 +13,16 @@ find_package(Threads REQUIRED)
 find_package(OpenSSL REQUIRED)        # SHA-256 of scene files (libcrypto)
 # Bullet in double precision only: the pkg-config target carries -DBT_USE_DOUBLE_PRECISION.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
+# ODE 0.16 in double precision (the Debian build: pkg-config variable precision=dDOUBLE).
+pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
+# MuJoCo 2.2.2. Debian's mujoco::mujoco names /usr/include/libqhull_r/ as an include directory;
+# libqhull-dev provides it (installed by `make deps`), and the path is dropped if it is missing.
+find_package(mujoco REQUIRED)
+get_target_property(_vroc_mj_inc mujoco::mujoco INTERFACE_INCLUDE_DIRECTORIES)
+if(_vroc_mj_inc)
+  list(FILTER _vroc_mj_inc EXCLUDE REGEX "libqhull_r")
+  set_target_properties(mujoco::mujoco PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_vroc_mj_inc}")
+endif()
 # qhull's reentrant C library (libqhull_r); the C++ wrapper is not needed.
 find_library(QHULL_R_LIBRARY NAMES qhull_r REQUIRED)
 find_path(QHULL_R_INCLUDE_DIR libqhull_r/libqhull_r.h REQUIRED)

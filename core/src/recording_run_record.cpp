@@ -50,7 +50,7 @@ std::string toJson(const RunRecord& r) {
         {"format", kRunFormat},
         {"scene", {{"name", r.scene_name}, {"file", r.scene_file}, {"sha256", r.scene_sha256},
                    {"bodies", r.body_count}, {"virtual_bodies", r.virtual_body_count}}},
-        {"backend", {{"name", r.backend_name}, {"version", r.backend_version}}},
+        {"backend", {{"name", r.backend_name}, {"version", r.backend_version}, {"deviations", r.backend_deviations}}},
         {"settings", r.settings},
         {"frame_dt", r.frame_dt},
         {"duration", r.duration},

@@ -129,6 +129,7 @@ RunRecord initialRecord(const RunRequest& request) {
     r.virtual_body_count = scene.virtualBodyCount();
     r.backend_name = request.backend->name;
     r.backend_version = request.backend->version;
+    r.backend_deviations = request.backend->deviations;
     r.settings = request.settings.values();
     r.frame_dt = request.frame_dt;
     r.duration = request.duration;

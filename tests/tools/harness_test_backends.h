@@ -56,9 +56,18 @@ inline void registerTestBackends() {
     static bool done = false;
     if (done) return;
     done = true;
-    BackendInfo exact{"test-exact", "exact ballistic flight (tests only)", "test 1", {}, nullptr};
+    // Flight only: every shape "exact" (they ignore contact), so the harness runs every scene.
+    BackendCapabilities flight;
+    flight.sphere = flight.box = flight.hull = flight.compound = flight.restitution = Support::Exact;
+    BackendInfo exact;
+    exact.name = "test-exact";
+    exact.description = "exact ballistic flight (tests only)";
+    exact.version = "test 1";
+    exact.capabilities = flight;
     exact.create = [](const Scene& s, const Settings&) -> std::unique_ptr<Backend> { return std::make_unique<FlightBackend>(s, true); };
-    BackendInfo euler{"test-euler", "semi-implicit Euler flight (tests only)", "test 1", {}, nullptr};
+    BackendInfo euler = exact;
+    euler.name = "test-euler";
+    euler.description = "semi-implicit Euler flight (tests only)";
     euler.create = [](const Scene& s, const Settings&) -> std::unique_ptr<Backend> { return std::make_unique<FlightBackend>(s, false); };
     BackendRegistry::global().add(exact);
     BackendRegistry::global().add(euler);

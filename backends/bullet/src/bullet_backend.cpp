@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "bullet_backend.h"
+#include "vroc/core/backend_vocabulary.h"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -189,11 +190,15 @@ BulletBackend::BodyRecord& BulletBackend::record(int body, const char* what) {
 void BulletBackend::setBodyState(int body, const BodyState& state) {
     BodyRecord& rec = record(body, "setBodyState");
     if (rec.is_static) return;
+    // A non-finite state is numerical trouble (a tracker glitch): counted and refused. A zero
+    // quaternion is no rotation at all: the caller's mistake.
     if (!state.pose.position.allFinite() || !state.pose.orientation.coeffs().allFinite() ||
-        state.pose.orientation.norm() == 0.0 || !state.linear_velocity.allFinite() ||
-        !state.angular_velocity.allFinite())
-        throw InputError("bullet: setBodyState: body " + std::to_string(body) +
-                         ": expected finite pose, non-zero quaternion and finite velocities");
+        !state.linear_velocity.allFinite() || !state.angular_velocity.allFinite()) {
+        ++nonfinite_;
+        return;
+    }
+    if (state.pose.orientation.norm() == 0.0)
+        throw InputError("bullet: setBodyState: body " + std::to_string(body) + ": expected a non-zero quaternion");
     BodyState com = state;
     com.pose.orientation.normalize();
     com.pose = com.pose * rec.com_in_body;
@@ -203,8 +208,10 @@ void BulletBackend::setBodyState(int body, const BodyState& state) {
 void BulletBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) {
     BodyRecord& rec = record(body, "applyImpulse");
     if (rec.is_static) return;
-    if (!impulse.allFinite() || !world_point.allFinite())
-        throw InputError("bullet: applyImpulse: body " + std::to_string(body) + ": expected a finite impulse and point");
+    if (!impulse.allFinite() || !world_point.allFinite()) {   // numerical trouble: counted, ignored
+        ++nonfinite_;
+        return;
+    }
     btRigidBody& rigid = *rec.rigid;
     rigid.updateInertiaTensor();   // world inverse inertia for the current orientation
     rigid.applyImpulse(toBt(impulse), toBt(world_point) - rigid.getWorldTransform().getOrigin());
@@ -212,12 +219,12 @@ void BulletBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& worl
 }
 
 WarningCounts BulletBackend::warnings() const {
-    return {{"nonfinite_state", nonfinite_}, {"aabb_overflow", aabb_overflow_}};
+    return vocabulary::prefixed(WarningCounts{{"nonfinite_state", nonfinite_}, {"aabb_overflow", aabb_overflow_}}, "bullet");
 }
 
 Statistics BulletBackend::statistics() const {
     const double steps = static_cast<double>(internal_steps_);
-    return {
+    return vocabulary::prefixed(Statistics{
         {"frames", static_cast<double>(frames_)},
         {"internal_steps", steps},
         {"ccd_bodies", static_cast<double>(ccd_bodies_)},
@@ -227,7 +234,7 @@ Statistics BulletBackend::statistics() const {
         {"contact_points_mean", steps > 0 ? static_cast<double>(events_.contactPointTotal()) / steps : 0.0},
         {"pairs_in_contact", static_cast<double>(events_.pairsInContact())},
         {"collision_events", static_cast<double>(events_.eventTotal())},
-    };
+    }, "bullet");
 }
 
 }  // namespace vroc::bullet

@@ -10,7 +10,7 @@ namespace vroc::bullet {
 
 /// Parsed `bullet.*` settings (docs/bullet-backend.md explains each default).
 struct BulletConfig {
-    int substeps = 4;                        ///< fixed internal steps per frame
+    int substeps = 1;                        ///< fixed internal steps per frame (Bullet's own default: 1 per 1/60 s)
     int solver_iterations = 10;              ///< sequential-impulse iterations per internal step
     bool ccd = true;                         ///< swept-sphere CCD on virtual bodies
     double margin = 0.04;                    ///< [m] collision margin of boxes and hulls

@@ -29,6 +29,29 @@ void registerBackend() {
     info.name = "bullet";
     info.description = "reference: Bullet btDiscreteDynamicsWorld, double precision, fixed sub-steps, no sleeping";
     info.version = versionText();
+    BackendCapabilities& c = info.capabilities;
+    c.sphere = Support::Exact;
+    c.box = Support::Approximated;
+    c.hull = Support::Approximated;
+    c.compound = Support::Exact;
+    c.restitution = Support::Approximated;
+    c.friction = FrictionModel::Pyramid;
+    c.continuous_collision = true;
+    c.deterministic = true;
+    c.precision = "double";
+    c.notes["box"] = "edges and corners rounded by the collision margin (bullet.margin, 0.04 m by default)";
+    c.notes["hull"] = "faces shrunk by the margin so the rounded surface lies on the scene's faces; edges and "
+                      "corners rounded by it";
+    c.notes["restitution"] = "approach speeds below bullet.restitution_threshold (0.2 m/s) bounce with e = 0";
+    c.notes["friction"] = "two orthogonal friction rows per contact point, each clamped to mu x normal impulse";
+    c.notes["continuous_collision"] = "swept sphere of the inner radius (Bullet's CCD), not exact time of impact";
+    info.deviations = {
+        "double precision (bullet-float64): every backend solves in double",
+        "sleeping off (DISABLE_DEACTIVATION): comparisons keep every body awake on every backend",
+        "material rule: restitution = min, friction = geometric mean (the scene's rule; Bullet multiplies both)",
+        "swept-sphere CCD on for virtual bodies (Bullet: off): the scenes throw fast bodies at thin walls",
+        "hull faces shrunk by the margin (bullet.shrink_hulls): surfaces where the scene puts them",
+    };
     info.settings = bulletSettingSpecs();
     info.create = &create;
     BackendRegistry::global().add(std::move(info));

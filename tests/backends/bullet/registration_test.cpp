@@ -38,7 +38,13 @@ TEST(BulletRegistration, BadCallsAreInputErrors) {
     EXPECT_THROW(backend->applyImpulse(-1, Vec3::UnitX(), Vec3::Zero()), InputError);
     BodyState bad;
     bad.linear_velocity.x() = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_THROW(backend->setBodyState(0, bad), InputError);
+    const BodyState before = backend->bodyState(0);
+    backend->setBodyState(0, bad);   // numerical trouble (docs/backend-contract.md): counted, refused
+    EXPECT_EQ(backend->warnings().at("nonfinite_state"), 1u);
+    EXPECT_EQ(backend->bodyState(0).pose.position, before.pose.position);
+    BodyState no_rotation = before;
+    no_rotation.pose.orientation.coeffs().setZero();
+    EXPECT_THROW(backend->setBodyState(0, no_rotation), InputError);
     EXPECT_THROW(backend->stepFrame(0.0), InputError);
     Scene massless = emptyScene();
     addFloor(massless);

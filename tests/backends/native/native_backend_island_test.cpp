@@ -81,7 +81,7 @@ TEST(NativeIslands, RestingPileIsSolvedOncePerTick) {
         for (int f = 0; f < 60; ++f) be->stepFrame(s.frame_dt);
         const auto st = be->statistics();
         // Two islands, each solved at each of its ticks: 2 x substeps solves per frame.
-        EXPECT_EQ(st.at("contact_solves"), 2.0 * substeps * 60) << "substeps " << substeps;
+        EXPECT_EQ(st.at("native.contact_solves"), 2.0 * substeps * 60) << "substeps " << substeps;
         EXPECT_EQ(st.at("internal_steps"), substeps * 60.0) << "substeps " << substeps;
         for (int body = 1; body < static_cast<int>(s.bodies.size()); ++body)
             EXPECT_LT(be->bodyState(body).linear_velocity.norm(), 1e-6);
@@ -165,7 +165,7 @@ TEST(NativeIslands, SleepingIsOffByDefaultAndAPileSleepsAndWakes) {
     // Off by default: the pile is solved at every tick.
     auto awake = makeBackend(s);
     for (int f = 0; f < 60; ++f) awake->stepFrame(s.frame_dt);
-    EXPECT_EQ(awake->statistics().at("islands_slept"), 0.0);
+    EXPECT_EQ(awake->statistics().at("native.islands_slept"), 0.0);
     // On: the pile sleeps after 0.5 s still, costs nothing, and wakes when the ball lands on it.
     NativeSettings ns;
     ns.sleeping = true;
@@ -175,16 +175,16 @@ TEST(NativeIslands, SleepingIsOffByDefaultAndAPileSleepsAndWakes) {
     bool woke = false;
     for (int f = 0; f < 90; ++f) {
         be->stepFrame(s.frame_dt);
-        const double solves = be->statistics().at("contact_solves");
+        const double solves = be->statistics().at("native.contact_solves");
         if (f == 45) solves_asleep = solves;
         if (f > 45 && f < 50) {
             EXPECT_EQ(solves, solves_asleep) << "frame " << f;   // asleep, ball still falling
         }
         if (!be->takeEvents().empty() && f > 45) woke = true;
     }
-    EXPECT_GE(be->statistics().at("islands_slept"), 1.0);
+    EXPECT_GE(be->statistics().at("native.islands_slept"), 1.0);
     EXPECT_TRUE(woke) << "the ball (falling from 6 m, lands at ~1.0 s) must hit the pile";
-    EXPECT_GT(be->statistics().at("contact_solves"), solves_asleep);
+    EXPECT_GT(be->statistics().at("native.contact_solves"), solves_asleep);
     EXPECT_LT((be->bodyState(4).pose.position - top_start).norm(), 0.02);   // the pile still stands
     (void)ball;
 }

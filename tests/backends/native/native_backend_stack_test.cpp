@@ -36,7 +36,7 @@ TEST(NativeStack, TenBoxesHoldForTenSeconds) {
         EXPECT_LT(be->bodyState(i).linear_velocity.norm(), 1e-3) << s.bodies[i].name;
     }
     const auto stats = be->statistics();
-    RecordProperty("internal_steps_per_frame_mean", std::to_string(stats.at("internal_steps_per_frame_mean")));
+    RecordProperty("internal_steps_per_frame_mean", std::to_string(stats.at("native.internal_steps_per_frame_mean")));
 }
 
 // native.solver_tolerance: a warm-started resting stack converges in fewer sweeps than the fixed
@@ -54,7 +54,7 @@ TEST(NativeStack, SolverToleranceStopsSweepsEarlyAndTheStackHolds) {
             be->stepFrame(s.frame_dt);
             drift = std::max(drift, (be->bodyState(top).pose.position - start).norm());
         }
-        return be->statistics().at("contact_sweeps_per_solve");
+        return be->statistics().at("native.contact_sweeps_per_solve");
     };
     double drift_all = 0.0, drift_tol = 0.0;
     EXPECT_EQ(sweepsWith(0.0, drift_all), NativeSettings{}.contact_iterations);

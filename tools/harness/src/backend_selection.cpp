@@ -49,7 +49,7 @@ Json backendsJson(const std::vector<SelectedBackend>& backends) {
     Json out = Json::array();
     for (const SelectedBackend& b : backends)
         out.push_back({{"name", b.info->name}, {"version", b.info->version}, {"description", b.info->description},
-                       {"settings", b.settings.values()}});
+                       {"settings", b.settings.values()}, {"deviations", b.info->deviations}});
     return out;
 }
 

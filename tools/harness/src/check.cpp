@@ -5,10 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <set>
+#include <string>
 
 #include "vroc/core/errors.h"
 #include "vroc/harness/check_suite.h"
 #include "vroc/harness/html_report.h"
+#include "vroc/harness/scene_support.h"
 
 namespace vroc::harness {
 namespace {
@@ -21,6 +25,13 @@ bool passes(double measured, const CheckMetric& m) {
 
 // A result cell: pass null is a metric that is reported, not judged.
 const char* resultText(const Json& pass) { return pass.is_null() ? "info" : pass.get<bool>() ? "pass" : "FAIL"; }
+
+// A backend's result cell with its support: "n/s" (not supported), "pass~" (approximated).
+std::string cellResult(const Json& result) {
+    const std::string support = result.value("support", std::string("exact"));
+    if (support.rfind("not supported", 0) == 0) return "n/s";
+    return std::string(resultText(result["pass"])) + (support == "exact" ? "" : "~");
+}
 
 }  // namespace
 
@@ -62,6 +73,7 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
             const CheckMetric& cm = sc.metrics[m];
             rows[m] = {{"id", cm.id}, {"scenario", sc.id}, {"title", cm.title}, {"closed_form", cm.closed_form},
                        {"units", cm.units}, {"expected", cm.expected}, {"tolerance", number(cm.tolerance)},
+                       {"criterion", cm.criterion},
                        {"required_for_native", cm.required_for_native}, {"results", Json::object()}};
         }
         for (const SelectedBackend& b : backends) {
@@ -70,17 +82,33 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
                 std::snprintf(count, sizeof count, "[%zu/%zu] ", s_index, scenarios.size());
                 progressLine("check", count + sc.id + " on " + b.info->name);
             }
-            RunOptions ro;
-            ro.frame_dt = sc.frame_dt;
-            ro.frames = framesFor(sc.duration, sc.frame_dt);
+            // A scene the backend cannot represent is reported, not run; an approximated one is
+            // run and its cells say so.
+            SceneSupport support = sceneSupport(scene, b.info->capabilities);
+            RunTrace trace;
             const auto start = std::chrono::steady_clock::now();
-            const RunTrace trace = runBackend(*b.info, scene, b.settings, ro);
+            if (support.level != Support::Unsupported) {
+                RunOptions ro;
+                ro.frame_dt = sc.frame_dt;
+                ro.frames = framesFor(sc.duration, sc.frame_dt);
+                try {
+                    trace = runBackend(*b.info, scene, b.settings, ro);
+                } catch (const InputError& e) {   // refused at creation: the backend's own word
+                    support = {Support::Unsupported, e.what()};
+                }
+            }
             for (std::size_t m = 0; m < sc.metrics.size(); ++m) {
                 const CheckMetric& cm = sc.metrics[m];
+                Json& cell = rows[m]["results"][b.info->name];
+                if (support.level == Support::Unsupported) {
+                    cell = {{"measured", nullptr}, {"pass", nullptr}, {"support", supportText(support)}};
+                    continue;
+                }
                 const double measured = trace.finite ? cm.measure(scene, trace) : NAN;
                 const bool ok = passes(measured, cm);
                 if (!ok && cm.judged() && cm.required_for_native && b.info->name == kNative) ++native_failures;
-                rows[m]["results"][b.info->name] = {{"measured", number(measured)}, {"pass", cm.judged() ? Json(ok) : Json(nullptr)}};
+                cell = {{"measured", number(measured)}, {"pass", cm.judged() ? Json(ok) : Json(nullptr)},
+                        {"support", supportText(support)}};
             }
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             wall[b.info->name] = wall.value(b.info->name, 0.0) + seconds;
@@ -90,17 +118,18 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
     doc["results"] = {{"checks", checks}, {"wall_time_s", wall}, {"required_failures_native", native_failures}};
 
     // Table: one row per check metric, measured and pass/fail per backend.
-    std::vector<std::string> columns = {"check", "closed form", "units", "expected", "tolerance", "required for native"};
+    std::vector<std::string> columns = {"check", "closed form", "units", "expected", "tolerance", "tolerance: why", "required for native"};
     for (const SelectedBackend& b : backends) {
         columns.push_back(b.info->name + " measured");
         columns.push_back(b.info->name + " result");
     }
     std::vector<std::vector<Json>> rows;
     for (const Json& c : checks) {
-        std::vector<Json> row = {c["id"], c["closed_form"], c["units"], c["expected"], c["tolerance"], c["required_for_native"]};
+        std::vector<Json> row = {c["id"], c["closed_form"], c["units"], c["expected"], c["tolerance"], c["criterion"],
+                                 c["required_for_native"]};
         for (const SelectedBackend& b : backends) {
             row.push_back(c["results"][b.info->name]["measured"]);
-            row.push_back(resultText(c["results"][b.info->name]["pass"]));
+            row.push_back(cellResult(c["results"][b.info->name]));
         }
         rows.push_back(row);
     }
@@ -114,6 +143,7 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
             const Json& c = checks[i];
             const Json& meas = c["results"][b.info->name]["measured"];
             if (c["tolerance"].is_null()) continue;   // reported, not judged
+            if (cellResult(c["results"][b.info->name]) == "n/s") continue;   // not run
             const double tol = c["tolerance"];
             const double err = meas.is_null() ? 1e6 : std::abs(meas.get<double>() - c["expected"].get<double>());
             const double ratio = tol > 0 ? err / tol : (err > 0 ? 1e6 : 0);
@@ -136,7 +166,7 @@ std::string checkTableText(const Json& doc) {
     for (const Json& c : doc["results"]["checks"]) width = std::max(width, static_cast<int>(c["id"].get<std::string>().size()));
     std::snprintf(line, sizeof line, "%-*s %-5s %12s %10s", width, "check", "req", "expected", "tolerance");
     out += line;
-    for (const auto& n : names) { std::snprintf(line, sizeof line, " | %-8s %12s %-4s", n.c_str(), "measured", ""); out += line; }
+    for (const auto& n : names) { std::snprintf(line, sizeof line, " | %-8s %12s %-5s", n.c_str(), "measured", ""); out += line; }
     out += "\n";
     for (const Json& c : doc["results"]["checks"]) {
         char tolerance[32] = "-";
@@ -146,11 +176,20 @@ std::string checkTableText(const Json& doc) {
         out += line;
         for (const auto& n : names) {
             const Json& r = c["results"][n];
-            std::snprintf(line, sizeof line, " | %-8s %12s %-4s", "", cellText(r["measured"]).c_str(), resultText(r["pass"]));
+            std::snprintf(line, sizeof line, " | %-8s %12s %-5s", "", cellText(r["measured"]).c_str(), cellResult(r).c_str());
             out += line;
         }
         out += "\n";
     }
+    // Why a cell is "n/s" or "~": one line per backend and reason.
+    std::map<std::string, std::set<std::string>> why;
+    for (const Json& c : doc["results"]["checks"])
+        for (const auto& n : names) {
+            const std::string support = c["results"][n].value("support", std::string("exact"));
+            if (support != "exact") why[n].insert(support);
+        }
+    for (const auto& [n, reasons] : why)
+        for (const std::string& r : reasons) out += n + ": " + r + "\n";
     return out;
 }
 

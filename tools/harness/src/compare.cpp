@@ -9,10 +9,12 @@
 #include "vroc/core/errors.h"
 #include "vroc/core/state_hash.h"
 #include "vroc/core/recording/atomic_output.h"
+#include "vroc/harness/consensus.h"
 #include "vroc/harness/divergence.h"
 #include "vroc/harness/event_timing.h"
 #include "vroc/harness/html_report.h"
 #include "vroc/harness/penetration.h"
+#include "vroc/harness/scene_support.h"
 #include "vroc/harness/series_tools.h"
 #include "vroc/harness/timing_stats.h"
 
@@ -118,10 +120,92 @@ ChartSeries traceSeries(const RunTrace& t, const std::string& name, const std::v
     return {name, "lines", pick(t.times, idx), pick(y, idx)};
 }
 
+// The consensus table: per observable, which backends agree within their own twin noise floors
+// (plus the observable's stated resolution) and which one is the odd one out.
+Json consensusJson(const Scene& scene, const std::vector<SelectedBackend>& backends, const std::vector<BackendRuns>& runs,
+                   const std::vector<Divergence>& twin_spread, double dt, std::vector<std::vector<Json>>& rows) {
+    const std::size_t n = backends.size();
+    std::vector<std::string> names;
+    for (const SelectedBackend& b : backends) names.push_back(b.info->name);
+    double weight = 0;   // sum of m |g|: the energy of lifting every body by 1 m
+    for (const Body& b : scene.bodies)
+        if (!b.isStatic()) weight += b.mass_properties.mass * scene.gravity.norm();
+    auto firstContact = [](const RunTrace& t) { return t.events.empty() ? NAN : t.events.front().time; };
+    auto finalEnergy = [](const RunTrace& t) { return t.invariants.back().energy(); };
+    std::vector<ConsensusInput> inputs(3);
+    ConsensusInput& contact = inputs[0];
+    contact.observable = "first contact [s]";
+    contact.floor = dt;
+    contact.floor_reason = "one frame: events are reported per frame";
+    ConsensusInput& rest = inputs[1];
+    rest.observable = "final positions [m]";
+    rest.floor = scene.collision_distance;
+    rest.floor_reason = "the collision distance: where a body rests within the contact window";
+    ConsensusInput& energy = inputs[2];
+    energy.observable = "final energy [J]";
+    energy.floor = weight * scene.collision_distance;
+    energy.floor_reason = "sum m|g| x collision distance: the energy of resting one contact window higher";
+    for (ConsensusInput& in : inputs) {
+        in.backends = names;
+        in.present.assign(n, true);
+        in.noise.assign(n, 0.0);
+    }
+    std::vector<double> t0(n), e(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        t0[i] = firstContact(runs[i].main);
+        contact.present[i] = std::isfinite(t0[i]);
+        const double twin_t0 = firstContact(runs[i].twin);
+        contact.noise[i] = std::isfinite(twin_t0) && contact.present[i] ? std::abs(t0[i] - twin_t0) : 0.0;
+        rest.noise[i] = twin_spread[i].distance.back();
+        e[i] = finalEnergy(runs[i].main);
+        energy.noise[i] = std::abs(e[i] - finalEnergy(runs[i].twin));
+    }
+    contact.difference = [&](std::size_t a, std::size_t b) { return std::abs(t0[a] - t0[b]); };
+    rest.difference = [&](std::size_t a, std::size_t b) {
+        return maxPositionError(scene, runs[a].main.states.back(), runs[b].main.states.back());
+    };
+    energy.difference = [&](std::size_t a, std::size_t b) { return std::abs(e[a] - e[b]); };
+    Json out = Json::array();
+    for (const ConsensusInput& in : inputs) {
+        const ConsensusResult r = consensus(in);
+        Json values = Json::object(), noise = Json::object();
+        for (std::size_t i = 0; i < n; ++i) {
+            noise[names[i]] = number(in.noise[i]);
+            if (&in == &contact) values[names[i]] = number(t0[i]);
+            if (&in == &energy) values[names[i]] = number(e[i]);
+        }
+        out.push_back({{"observable", in.observable}, {"verdict", r.verdict}, {"agreeing", r.agreeing},
+                       {"outliers", r.outliers}, {"floor", in.floor}, {"floor_reason", in.floor_reason},
+                       {"values", values}, {"noise", noise}});
+        std::string agreeing;
+        for (const std::string& a : r.agreeing) agreeing += (agreeing.empty() ? "" : ", ") + a;
+        std::string value_text;
+        for (std::size_t i = 0; i < n && &in != &rest; ++i) {
+            char v[64];
+            std::snprintf(v, sizeof v, "%s%s %.6g", value_text.empty() ? "" : "; ", names[i].c_str(),
+                          &in == &contact ? t0[i] : e[i]);
+            value_text += v;
+        }
+        if (&in == &rest) value_text = "(pairwise: largest body distance between final states)";
+        rows.push_back({in.observable, value_text, r.verdict, agreeing, in.floor, in.floor_reason});
+    }
+    return out;
+}
+
 }  // namespace
 
-Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& backends, const CompareOptions& o,
+Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& requested, const CompareOptions& o,
                   const std::filesystem::path& csv_dir) {
+    // A backend that cannot represent the scene is left out (and named); an approximated one runs.
+    std::vector<SelectedBackend> backends;
+    Json support = Json::object();
+    for (const SelectedBackend& b : requested) {
+        const SceneSupport s = sceneSupport(scene, b.info->capabilities);
+        support[b.info->name] = supportText(s);
+        if (s.level != Support::Unsupported) backends.push_back(b);
+        else if (o.progress) progressLine("compare", b.info->name + " left out: " + supportText(s));
+    }
+    if (backends.empty()) throw InputError("scene '" + scene.name + "': no selected backend can represent it");
     const double dt = o.frame_dt.value_or(scene.frame_dt);
     const std::int64_t frames = framesFor(o.duration, dt);
     const std::int64_t window_frames = std::max<std::int64_t>(1, framesFor(o.window, dt));
@@ -146,6 +230,7 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& backen
     doc["scene"] = {{"name", scene.name}, {"file", scene.source_path}, {"sha256", scene.source_sha256},
                     {"bodies", scene.bodies.size()}, {"virtual_bodies", scene.virtualBodyCount()}};
     doc["backends"] = backendsJson(backends);
+    doc["support"] = support;
     doc["parameters"] = {{"frame_dt_s", dt}, {"duration_s", o.duration}, {"frames", frames},
                          {"windows", anchors.size()}, {"window_s", window_frames * dt},
                          {"twin_epsilon_m", o.twin_epsilon}, {"horizon_delta_m", o.horizon_delta},
@@ -216,12 +301,18 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& backen
     for (std::size_t i = 0; i < n; ++i)
         div.series.push_back(traceSeries(runs[i].main, "noise floor " + backends[i].info->name + " (twin spread)", twin_spread[i].distance));
     results["pairs"] = pairs;
+    std::vector<std::vector<Json>> consensus_rows;
+    results["consensus"] = consensusJson(scene, backends, runs, twin_spread, dt, consensus_rows);
     doc["results"] = results;
 
     doc["tables"].push_back(tableJson("summary", "Summary per backend",
         {"backend", "real-time factor [-]", "step p50 [µs]", "step p99 [µs]", "max penetration [mm]",
          "max |ΔE| [J]", "first contact [s]", "rest [s]", "horizon t_δ [s]", "window error [mm]", "finite", "deterministic"},
         summary));
+    // The report leads with the consensus: which backend is the odd one out, per observable.
+    doc["tables"].insert(doc["tables"].begin(),
+        tableJson("consensus", "Consensus: which backends agree (within their own twin noise floors plus the floor)",
+                  {"observable", "values", "verdict", "agreeing", "floor", "floor: why"}, consensus_rows));
     if (!pair_rows.empty())
         doc["tables"].push_back(tableJson("pairs", "Cross-backend divergence (counts only above both twin spreads)",
             {"pair", "max [m]", "final [m]", "first significant [s]", "significant fraction [-]"}, pair_rows));

@@ -114,7 +114,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
                              held(manifolds[m].body_b)
                          ? 1
                          : 0;
-    collisionPhase(manifolds, resting, scene_.gravity.norm() * h, h);
+    collisionPhase(manifolds, resting, scene_.gravity.norm() * h);
 
     // Contact phase, one solve per island (islands are independent: any worker, same bits).
     std::map<int, IslandSolve> by_root;
@@ -216,7 +216,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
 }
 
 void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
-                                   double resting_speed, double tick) {
+                                   double resting_speed) {
     for (int sweep = 0; sweep < settings_.collision_iterations; ++sweep) {
         bool any = false;
         for (std::size_t k = 0; k < manifolds.size(); ++k) {
@@ -226,11 +226,10 @@ void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, cons
             const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
             const double un = u.dot(m.normal);
             if (!(un < 0.0)) continue;
-            // A resting contact's slow approach is stopped with e = 0 (no micro-bounce). If the
-            // gap outlasts it (the contact phase stops it by the end of the tick, so the gap
-            // closes by at most |un| h / 2) it is left to the contact phase's block solve: a
-            // pile's residual approaches, handled here one centroid at a time, would rock it.
-            if (resting[k] != 0 && -un <= resting_speed && -un * tick <= m.distance) continue;
+            // A resting contact's slow approach is stopped plastically (no micro-bounce); it must
+            // still be stopped now: the contact phase only fixes the end of the step. (Leaving it to
+            // the contact phase's block solve when the gap outlasts the tick holds pyramids a little
+            // stiller but lets tumbling boxes in bins dig in: 1.6-1.9x the penetration_recovered.)
             const bool plastic = -un < settings_.restitution_threshold || (resting[k] != 0 && -un <= resting_speed);
             const double e = plastic ? 0.0 : m.restitution;
             const ImpulseResult r =

@@ -43,8 +43,15 @@ NativeBackend::NativeBackend(const Scene& scene, const NativeSettings& settings)
     partition_ = std::make_unique<PairPartition>(settings_.threads);
 }
 
+void NativeBackend::checkBody(int body, const char* call) const {
+    if (body < 0 || body >= bodyCount())
+        throw InputError(std::string("native: ") + call + ": no body with index " + std::to_string(body) + " (the scene has " +
+                         std::to_string(bodyCount()) + ")");
+}
+
 BodyState NativeBackend::bodyState(int body) const {
-    const RigidBody& rb = bodies_.at(static_cast<std::size_t>(body));
+    checkBody(body, "bodyState");
+    const RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
     BodyState s;
     s.pose = rb.framePose();
     s.linear_velocity = rb.velocity;
@@ -53,20 +60,24 @@ BodyState NativeBackend::bodyState(int body) const {
 }
 
 void NativeBackend::setBodyState(int body, const BodyState& state) {
-    RigidBody& rb = bodies_.at(static_cast<std::size_t>(body));
+    checkBody(body, "setBodyState");
+    RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
     if (rb.is_static) return;
     if (!state.pose.position.allFinite() || !state.pose.orientation.coeffs().allFinite() ||
         !state.linear_velocity.allFinite() || !state.angular_velocity.allFinite()) {
         warn("nonfinite_state");
         return;
     }
+    if (state.pose.orientation.norm() == 0.0)
+        throw InputError("native: setBodyState: body " + std::to_string(body) + ": expected a non-zero quaternion");
     rb.setFromState(state.pose, state.linear_velocity, state.angular_velocity);
     wake(body);
     endDrift(body);   // the drift was for the old state
 }
 
 void NativeBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) {
-    RigidBody& rb = bodies_.at(static_cast<std::size_t>(body));
+    checkBody(body, "applyImpulse");
+    RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
     if (rb.is_static) return;
     if (!impulse.allFinite() || !world_point.allFinite()) {
         warn("nonfinite_state");
@@ -84,10 +95,8 @@ std::vector<CollisionEvent> NativeBackend::takeEvents() {
 }
 
 void NativeBackend::stepFrame(double dt) {
-    if (!(dt > 0.0) || !std::isfinite(dt)) {
-        warn("invalid_frame_dt");
-        return;
-    }
+    if (!(dt > 0.0) || !std::isfinite(dt))
+        throw InputError("native: stepFrame: frame dt must be a positive finite number [s], got " + std::to_string(dt));
     const double frame_start = time_;
     frame_end_ = frame_start + dt;
     frame_dt_ = dt;

@@ -32,6 +32,7 @@
 #include "scheduling/pair_partition.h"
 #include "scheduling/sweep_and_prune.h"
 #include "vroc/core/backend.h"
+#include "vroc/core/backend_vocabulary.h"
 
 namespace vroc::native {
 
@@ -46,7 +47,7 @@ public:
     void setBodyState(int body, const BodyState& state) override;
     void applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) override;
     std::vector<CollisionEvent> takeEvents() override;
-    WarningCounts warnings() const override { return warnings_; }
+    WarningCounts warnings() const override { return vocabulary::prefixed(warnings_, "native"); }
     Statistics statistics() const override { return stats_.report(); }
 
 private:
@@ -116,10 +117,9 @@ private:
     /// island and the drifts; every sample is then scheduled.
     void solveIslands(std::vector<PairSample>& samples, double t);
     /// Restitution and friction impulses at approaching manifolds; a `resting` one (held at its
-    /// last solve) approaching slower than `resting_speed` [m/s] is stopped plastically (e = 0),
-    /// or left to the contact phase if its gap outlasts the tick `tick` [s] at that speed.
+    /// last solve) approaching slower than `resting_speed` [m/s] is stopped plastically (e = 0).
     void collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
-                        double resting_speed, double tick);
+                        double resting_speed);
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Impacts are resolved at touching, not at the window gap: a free sphere meeting a static body
     /// inside the window gets its refined touching time (within `horizon` [s] of `t`) as its pair's
@@ -156,6 +156,8 @@ private:
         changed_.push_back(body);
     }
     void warn(const char* kind, std::uint64_t n = 1) { warnings_[kind] += n; }
+    /// Throws InputError naming `call` if `body` is not a scene body index.
+    void checkBody(int body, const char* call) const;
     /// A body whose state went non-finite is put back to `saved`, at rest, and a warning counted.
     void recoverIfNonFinite(int body, const RigidBody& saved);
 

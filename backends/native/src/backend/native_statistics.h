@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "vroc/core/backend.h"
+#include "vroc/core/backend_vocabulary.h"
 
 namespace vroc::native {
 
@@ -28,6 +29,7 @@ struct NativeStatistics {
     std::int64_t max_island_bodies = 0;      ///< bodies (static ones included) of the largest island solved
     std::int64_t islands_slept = 0;          ///< islands put to sleep (native.sleeping)
 
+    /// Shared names (docs/backend-contract.md) as they are; the rest get the "native." prefix.
     Statistics report() const {
         Statistics s;
         const double steps = static_cast<double>(std::max<std::int64_t>(1, internal_steps));
@@ -37,15 +39,16 @@ struct NativeStatistics {
         s["internal_steps_per_frame_mean"] =
             static_cast<double>(internal_steps) / static_cast<double>(std::max<std::int64_t>(1, frames));
         s["internal_steps_per_frame_max"] = static_cast<double>(max_internal_steps_per_frame);
-        s["broad_phase_pairs_mean"] = static_cast<double>(broad_phase_pairs) / steps;
+        s["broadphase_pairs_mean"] = static_cast<double>(broad_phase_pairs) / steps;
         s["narrow_queries"] = static_cast<double>(narrow_queries);
         s["walk_steps_mean"] = static_cast<double>(walk_steps) / queries;
         s["walk_steps_max"] = static_cast<double>(max_walk_steps);
         s["contact_solves"] = static_cast<double>(step_solves);
         s["queue_pops"] = static_cast<double>(queue_pops);
-        s["collisions"] = static_cast<double>(collisions);
+        s["collision_events"] = static_cast<double>(collisions);
         s["contacts"] = static_cast<double>(contacts);
-        s["contact_points"] = static_cast<double>(contact_points);
+        s["contact_points_solved"] = static_cast<double>(contact_points);
+        s["contact_points_mean"] = static_cast<double>(contact_points) / steps;
         s["contact_sweeps_per_solve"] =
             static_cast<double>(contact_sweeps) / static_cast<double>(std::max<std::int64_t>(1, step_solves));
         s["shock_sweeps_per_solve"] =
@@ -53,7 +56,7 @@ struct NativeStatistics {
         s["position_corrections"] = static_cast<double>(position_corrections);
         s["max_island_bodies"] = static_cast<double>(max_island_bodies);
         s["islands_slept"] = static_cast<double>(islands_slept);
-        return s;
+        return vocabulary::prefixed(s, "native");
     }
 };
 

@@ -17,6 +17,17 @@ void registerBackend() {
     info.name = "native";
     info.description = "Lin-Canny/V-Clip closest features, impulse response, exact time of contact";
     info.version = "native 0.1 (V-Clip walk, Guendelman contact, exact flight)";
+    BackendCapabilities& c = info.capabilities;
+    c.sphere = Support::Exact;
+    c.box = Support::Exact;
+    c.hull = Support::Exact;
+    c.compound = Support::Exact;
+    c.restitution = Support::Exact;
+    c.friction = FrictionModel::Cone;
+    c.continuous_collision = true;
+    c.deterministic = true;
+    c.precision = "double";
+    // The native backend is VROC's own: its defaults are the reference, it deviates from nothing.
     info.settings = NativeSettings::specs();
     info.create = &create;
     BackendRegistry::global().add(std::move(info));

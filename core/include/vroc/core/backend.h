@@ -33,11 +33,20 @@ struct CollisionEvent {
     double impulse = 0.0;         ///< [N s] normal impulse of this collision (>= 0)
 };
 
-/// Counted numerical warnings by kind ("walk_not_converged", "nan_state", ...). Never NaN out.
+/// Counted numerical warnings by kind. Names come from the shared vocabulary
+/// (backend_vocabulary.h: `nonfinite_state`, ...) or carry the backend's prefix ("native.zeno_contact").
 using WarningCounts = std::map<std::string, std::uint64_t>;
-/// Backend statistics by name (counts and means), for run.json.
+/// Backend statistics by name (counts and means), for run.json. Shared names
+/// (backend_vocabulary.h: `frames`, `internal_steps`, `collision_events`, ...) or the backend's prefix.
 using Statistics = std::map<std::string, double>;
 
+/// The backend contract (docs/backend-contract.md). Every call is made from one thread at a time.
+/// Errors: a caller's mistake (a body index out of range, a frame dt <= 0 or not finite, a scene or
+/// setting the backend cannot represent) throws InputError. Numerical trouble never throws and
+/// never leaves the backend: it is counted as a warning and the body keeps (or returns to) a finite
+/// state. A non-finite state or impulse handed in through setBodyState / applyImpulse is such
+/// trouble (a tracker glitch): counted as `nonfinite_state`, refused, the body unchanged.
+/// Units SI, frames world unless said; the scene's body indices address bodies.
 class Backend {
 public:
     virtual ~Backend() = default;
@@ -62,11 +71,49 @@ public:
     virtual Statistics statistics() const = 0;
 };
 
+/// How faithfully a backend represents one feature of a scene.
+enum class Support {
+    Exact,          ///< as the scene states it
+    Approximated,   ///< represented, with a stated difference (BackendCapabilities::notes)
+    Unsupported,    ///< refused: creating a backend for a scene that needs it throws InputError
+};
+
+/// Friction model of the contact solver.
+enum class FrictionModel {
+    Cone,       ///< Coulomb's circular cone
+    Pyramid,    ///< a polygonal (usually 4-sided) approximation of the cone
+};
+
+/// What a backend can represent, declared once; the harness reads it so that a check or scene a
+/// backend cannot represent faithfully is reported "not supported" or "approximated: why".
+struct BackendCapabilities {
+    Support sphere = Support::Unsupported;
+    Support box = Support::Unsupported;
+    Support hull = Support::Unsupported;       ///< convex polyhedra (vertices + faces)
+    Support compound = Support::Unsupported;   ///< several convex parts on one rigid body
+    Support restitution = Support::Unsupported;   ///< Newton's coefficient per collision
+    FrictionModel friction = FrictionModel::Cone;
+    bool continuous_collision = false;   ///< no tunnelling at any speed (time of impact)
+    bool deterministic = true;           ///< same scene, settings and build give the same bits
+    std::string precision = "double";    ///< floating-point type of the solver
+    /// Why each Approximated entry differs, by feature name ("restitution", "hull", ...).
+    std::map<std::string, std::string> notes;
+};
+
+/// Name of a Support value ("exact", "approximated", "unsupported").
+const char* supportName(Support s);
+/// Name of a FrictionModel value ("cone", "pyramid").
+const char* frictionName(FrictionModel f);
+
 /// What a backend tells the registry about itself.
 struct BackendInfo {
     std::string name;             ///< used with --backend
     std::string description;      ///< one line
     std::string version;          ///< backend and underlying library version, e.g. "bullet 3.24 (double)"
+    BackendCapabilities capabilities;
+    /// Settings that differ from the underlying engine's own defaults, with why: a fair comparison
+    /// lists them in run.json ("sleeping off: every body stays awake on every backend").
+    std::vector<std::string> deviations;
     std::vector<SettingSpec> settings;
     /// Creates a backend for the scene. Throws InputError for settings the scene cannot honour.
     std::unique_ptr<Backend> (*create)(const Scene& scene, const Settings& settings) = nullptr;

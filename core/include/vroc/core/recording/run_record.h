@@ -30,6 +30,7 @@ struct RunRecord {
     std::size_t virtual_body_count = 0;        ///< rows per frame in trajectory.csv
     std::string backend_name;
     std::string backend_version;
+    std::vector<std::string> backend_deviations;   ///< from the engine's own defaults, with why
     std::map<std::string, std::string> settings;   ///< every effective setting, as written
     double frame_dt = 0;                       ///< [s]
     double duration = 0;                       ///< [s] requested

@@ -23,6 +23,9 @@ struct CheckMetric {
     double tolerance = 0;      ///< pass iff |measured - expected| <= tolerance; +infinity: reported, not judged
     bool required_for_native = false;
     std::function<double(const Scene&, const RunTrace&)> measure;
+    /// Why the tolerance is what it is: the physical criterion it comes from (never "so that an
+    /// engine passes"). Set for every analytic metric (checkCriterion).
+    std::string criterion;
 
     bool judged() const { return std::isfinite(tolerance); }
 };

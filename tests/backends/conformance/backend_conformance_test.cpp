@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: MIT
+// The backend contract (docs/backend-contract.md), checked on every backend of
+// conformance_backends.h. Expected values are closed forms (momentum, round trips) or the
+// contract's own words (names, errors), never another backend's output.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "conformance_backends.h"
+#include "conformance_scenes.h"
+#include "vroc/core/backend_registry.h"
+#include "vroc/core/backend_vocabulary.h"
+#include "vroc/core/errors.h"
+#include "vroc/core/scene_loader.h"
+#include "vroc/core/settings.h"
+#include "vroc/core/state_hash.h"
+#include "vroc/harness/scene_support.h"
+
+namespace vroc::conformance {
+namespace {
+
+const BackendInfo& infoOf(const std::string& name) {
+    for (const ConformanceBackend& b : conformanceBackends())
+        if (!BackendRegistry::global().find(b.name)) b.register_fn();
+    return BackendRegistry::global().require(name);
+}
+
+std::unique_ptr<Backend> create(const std::string& name, const Scene& scene) {
+    const BackendInfo& info = infoOf(name);
+    return info.create(scene, resolveSettings(info.settings, {}));
+}
+
+std::vector<BodyState> statesOf(const Backend& b) {
+    std::vector<BodyState> out;
+    for (int i = 0; i < b.bodyCount(); ++i) out.push_back(b.bodyState(i));
+    return out;
+}
+
+bool finite(const BodyState& s) {
+    return s.pose.position.allFinite() && s.pose.orientation.coeffs().allFinite() && s.linear_velocity.allFinite() &&
+           s.angular_velocity.allFinite();
+}
+
+// The same rotation (q and -q are), to `tol` per quaternion component.
+bool sameRotation(const Quat& a, const Quat& b, double tol) {
+    return (a.coeffs() - b.coeffs()).cwiseAbs().maxCoeff() <= tol || (a.coeffs() + b.coeffs()).cwiseAbs().maxCoeff() <= tol;
+}
+
+std::vector<std::filesystem::path> shippedScenes() {
+    std::vector<std::filesystem::path> out;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(std::filesystem::path(VROC_SOURCE_DIR) / "scenes"))
+        if (e.is_regular_file() && e.path().extension() == ".json") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+class Conformance : public ::testing::TestWithParam<std::string> {};
+
+// Every shipped scene is created (or refused with InputError when the backend declares a feature
+// it needs unsupported) and steps to finite states at the summed frame time.
+TEST_P(Conformance, EveryShippedSceneLoadsAndSteps) {
+    const std::vector<std::filesystem::path> scenes = shippedScenes();
+    ASSERT_GE(scenes.size(), 20u) << "scenes/ not found under " << VROC_SOURCE_DIR;
+    for (const auto& path : scenes) {
+        SCOPED_TRACE(path.string());
+        const Scene scene = loadScene(path.string());
+        const harness::SceneSupport support = harness::sceneSupport(scene, infoOf(GetParam()).capabilities);
+        if (support.level == Support::Unsupported) {
+            EXPECT_THROW(create(GetParam(), scene), InputError) << harness::supportText(support);
+            continue;
+        }
+        auto b = create(GetParam(), scene);
+        ASSERT_EQ(b->bodyCount(), static_cast<int>(scene.bodies.size()));
+        for (int f = 0; f < 2; ++f) b->stepFrame(scene.frame_dt);
+        EXPECT_NEAR(b->time(), 2 * scene.frame_dt, 1e-12);
+        for (const BodyState& s : statesOf(*b)) ASSERT_TRUE(finite(s));
+    }
+}
+
+TEST_P(Conformance, SetBodyStateRoundTrips) {
+    for (Shape shape : {Shape::box(Vec3(0.3, 0.2, 0.1)), irregularHull()}) {
+        SCOPED_TRACE(shape.kindName());
+        const Scene scene = lonelyBody(shape);
+        auto b = create(GetParam(), scene);
+        BodyState s;
+        s.pose = poseAt(Vec3(1.25, -0.5, 2.0), Quat(Eigen::AngleAxisd(2.1, Vec3(-1, 0.5, 2).normalized())));
+        s.linear_velocity = Vec3(0.3, -1.2, 2.5);
+        s.angular_velocity = Vec3(-0.7, 1.9, 0.4);
+        b->setBodyState(1, s);
+        const BodyState r = b->bodyState(1);
+        EXPECT_LE((r.pose.position - s.pose.position).norm(), 1e-12 * 4);
+        EXPECT_TRUE(sameRotation(r.pose.orientation, s.pose.orientation, 1e-12));
+        EXPECT_LE((r.linear_velocity - s.linear_velocity).norm(), 1e-12 * 4);
+        EXPECT_LE((r.angular_velocity - s.angular_velocity).norm(), 1e-12 * 4);
+    }
+}
+
+// Momentum changes by exactly J; angular momentum about the COM by (p - com) x J.
+TEST_P(Conformance, ApplyImpulseChangesMomentumByTheImpulse) {
+    const Scene scene = lonelyBody(irregularHull());
+    const Body& body = scene.bodies[1];
+    auto b = create(GetParam(), scene);
+    b->stepFrame(scene.frame_dt);   // not at the initial state: the pose has moved
+    const BodyState before = b->bodyState(1);
+    const Vec3 com = before.pose.position + before.pose.orientation * body.mass_properties.center_of_mass;
+    const Vec3 impulse(0.8, -0.3, 1.1), point = com + Vec3(0.05, 0.12, -0.07);
+    b->applyImpulse(1, impulse, point);
+    const BodyState after = b->bodyState(1);
+    const double m = body.mass_properties.mass;
+    EXPECT_LE((m * (after.linear_velocity - before.linear_velocity) - impulse).norm(), 1e-12 * 8);
+    const Mat3 r = before.pose.orientation.toRotationMatrix();
+    const Mat3 inertia = r * body.mass_properties.inertia * r.transpose();
+    const Vec3 dl = inertia * (after.angular_velocity - before.angular_velocity);
+    EXPECT_LE((dl - (point - com).cross(impulse)).norm(), 1e-11) << "angular momentum change " << dl.transpose();
+    EXPECT_LE((after.pose.position - before.pose.position).norm(), 1e-15) << "an impulse moves nothing";
+}
+
+TEST_P(Conformance, RealBodiesIgnoreStateAndImpulses) {
+    const Scene scene = lonelyBody(Shape::sphere(0.2));
+    auto b = create(GetParam(), scene);
+    const BodyState floor = b->bodyState(0);
+    BodyState moved = floor;
+    moved.pose.position += Vec3(1, 2, 3);
+    moved.linear_velocity = Vec3(1, 0, 0);
+    b->setBodyState(0, moved);
+    b->applyImpulse(0, Vec3(0, 0, 100), floor.pose.position);
+    b->stepFrame(scene.frame_dt);
+    const BodyState after = b->bodyState(0);
+    EXPECT_EQ(after.pose.position, floor.pose.position);
+    EXPECT_EQ(after.linear_velocity, Vec3::Zero());
+}
+
+TEST_P(Conformance, SameInputGivesTheSameStateHash) {
+    const Scene scene = loadScene(std::string(VROC_SOURCE_DIR) + "/scenes/staircase.json");
+    std::string hashes[2];
+    for (std::string& h : hashes) {
+        auto b = create(GetParam(), scene);
+        for (int f = 0; f < 90; ++f) b->stepFrame(scene.frame_dt);
+        h = hashToHex(stateHash(*b));
+    }
+    EXPECT_EQ(hashes[0], hashes[1]);
+}
+
+// A non-finite state handed in mid-run is counted and refused: the body keeps a finite state and
+// the run goes on.
+TEST_P(Conformance, NonfiniteStateBecomesACountedWarningAndAFiniteState) {
+    const Scene scene = loadScene(std::string(VROC_SOURCE_DIR) + "/scenes/ball_drop.json");
+    auto b = create(GetParam(), scene);
+    int ball = -1;
+    for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
+        if (!scene.bodies[static_cast<std::size_t>(i)].isStatic()) ball = i;
+    ASSERT_GE(ball, 0);
+    for (int f = 0; f < 10; ++f) b->stepFrame(scene.frame_dt);
+    BodyState bad = b->bodyState(ball);
+    bad.linear_velocity.z() = std::numeric_limits<double>::quiet_NaN();
+    bad.pose.position.x() = std::numeric_limits<double>::infinity();
+    b->setBodyState(ball, bad);
+    b->applyImpulse(ball, Vec3(0, 0, std::numeric_limits<double>::quiet_NaN()), Vec3::Zero());
+    const auto warnings = b->warnings();
+    ASSERT_TRUE(warnings.count(vocabulary::kNonfiniteState));
+    EXPECT_GE(warnings.at(vocabulary::kNonfiniteState), 2u);
+    for (int f = 0; f < 10; ++f) b->stepFrame(scene.frame_dt);
+    for (const BodyState& s : statesOf(*b)) EXPECT_TRUE(finite(s));
+}
+
+TEST_P(Conformance, StatisticsAndWarningsKeepToTheVocabulary) {
+    const Scene scene = loadScene(std::string(VROC_SOURCE_DIR) + "/scenes/staircase.json");
+    auto b = create(GetParam(), scene);
+    for (int f = 0; f < 120; ++f) b->stepFrame(scene.frame_dt);
+    std::vector<std::string> stats, warns;
+    for (const auto& [k, v] : b->statistics()) stats.push_back(k);
+    for (const auto& [k, v] : b->warnings()) warns.push_back(k);
+    EXPECT_EQ(vocabulary::foreignNames(stats, vocabulary::sharedStatistics(), GetParam()), std::vector<std::string>{});
+    EXPECT_EQ(vocabulary::foreignNames(warns, vocabulary::sharedWarnings(), GetParam()), std::vector<std::string>{});
+    const auto s = b->statistics();
+    for (const char* required : {vocabulary::kFrames, vocabulary::kInternalSteps, vocabulary::kCollisionEvents})
+        ASSERT_TRUE(s.count(required)) << required;
+    EXPECT_EQ(s.at(vocabulary::kFrames), 120.0);
+    EXPECT_GE(s.at(vocabulary::kInternalSteps), 120.0);
+    EXPECT_GE(s.at(vocabulary::kCollisionEvents), 1.0) << "the staircase ball hits the steps";
+}
+
+TEST_P(Conformance, CallersMistakesThrowInputError) {
+    const Scene scene = lonelyBody(Shape::sphere(0.2));
+    auto b = create(GetParam(), scene);
+    EXPECT_THROW(b->bodyState(-1), InputError);
+    EXPECT_THROW(b->bodyState(b->bodyCount()), InputError);
+    EXPECT_THROW(b->setBodyState(7, BodyState{}), InputError);
+    EXPECT_THROW(b->applyImpulse(-3, Vec3::UnitX(), Vec3::Zero()), InputError);
+    EXPECT_THROW(b->stepFrame(0.0), InputError);
+    EXPECT_THROW(b->stepFrame(-1.0 / 60.0), InputError);
+    EXPECT_THROW(b->stepFrame(std::numeric_limits<double>::quiet_NaN()), InputError);
+    BodyState zero = b->bodyState(1);
+    zero.pose.orientation.coeffs().setZero();
+    EXPECT_THROW(b->setBodyState(1, zero), InputError);
+    EXPECT_EQ(b->time(), 0.0);
+}
+
+// Each shape kind the backend declares unsupported is refused at creation with a message.
+TEST_P(Conformance, UnsupportedShapesAreRefusedAtCreation) {
+    const BackendCapabilities& c = infoOf(GetParam()).capabilities;
+    std::vector<std::pair<Support, Shape>> kinds{
+        {c.sphere, Shape::sphere(0.2)}, {c.box, Shape::box(Vec3(0.2, 0.2, 0.2))}, {c.hull, irregularHull()},
+        {c.compound, Shape::compound({{Shape::sphere(0.1), poseAt(Vec3(0.2, 0, 0))}, {Shape::sphere(0.1), poseAt(Vec3(-0.2, 0, 0))}})}};
+    int refused = 0;
+    for (auto& [support, shape] : kinds) {
+        if (support != Support::Unsupported) continue;
+        ++refused;
+        try {
+            create(GetParam(), lonelyBody(shape));
+            ADD_FAILURE() << shape.kindName() << " is declared unsupported but was accepted";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("body"), std::string::npos) << "the error names the body: " << e.what();
+        }
+    }
+    if (refused == 0) GTEST_SKIP() << GetParam() << " supports every shape kind";
+}
+
+TEST_P(Conformance, CapabilitiesExplainEveryApproximation) {
+    const BackendInfo& info = infoOf(GetParam());
+    const BackendCapabilities& c = info.capabilities;
+    const std::vector<std::pair<std::string, Support>> features{
+        {"sphere", c.sphere}, {"box", c.box}, {"hull", c.hull}, {"compound", c.compound}, {"restitution", c.restitution}};
+    for (const auto& [feature, support] : features)
+        if (support == Support::Approximated) {
+            ASSERT_TRUE(c.notes.count(feature)) << feature << " is approximated without a note";
+            EXPECT_FALSE(c.notes.at(feature).empty());
+        }
+    EXPECT_FALSE(info.version.empty());
+    EXPECT_FALSE(c.precision.empty());
+    for (const std::string& d : info.deviations) EXPECT_NE(d.find(':'), std::string::npos) << "a deviation says why: " << d;
+}
+
+std::vector<std::string> backendNames() {
+    std::vector<std::string> names;
+    for (const ConformanceBackend& b : conformanceBackends()) names.push_back(b.name);
+    return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllBackends, Conformance, ::testing::ValuesIn(backendNames()),
+                         [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
+
+}  // namespace
+}  // namespace vroc::conformance
