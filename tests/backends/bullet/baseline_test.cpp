@@ -14,32 +14,8 @@
 namespace vroc::test {
 namespace {
 
-using Overrides = std::vector<std::pair<std::string, std::string>>;
-
-// Ball r = 0.1 m, m = 1 kg, bottom 1 m above the floor (top face z = 0), both materials e.
-// Apex = bottom height at the frame end where the vertical velocity turns from up to down
-// (the larger of the two frames around the turn), as trajectory.csv would show it.
-struct DropResult {
-    std::vector<double> apexes;
-    int events = 0;   // collision events while those apexes happened
-};
-
 DropResult ballDrop(double e, const Overrides& overrides, int count) {
-    Scene scene = emptyScene(e, 0.5);
-    addFloor(scene);
-    const int ball = addBall(scene, "ball", 0.1, 1.0, Vec3(0, 0, 1.1));
-    auto backend = makeBullet(scene, overrides);
-    DropResult r;
-    BodyState prev = backend->bodyState(ball);
-    for (int f = 0; f < 60 * 20 && static_cast<int>(r.apexes.size()) < count; ++f) {
-        backend->stepFrame(scene.frame_dt);
-        r.events += static_cast<int>(backend->takeEvents().size());
-        const BodyState now = backend->bodyState(ball);
-        if (prev.linear_velocity.z() > 0 && now.linear_velocity.z() <= 0)
-            r.apexes.push_back(std::max(prev.pose.position.z(), now.pose.position.z()) - 0.1);
-        prev = now;
-    }
-    return r;
+    return test::ballDrop(&makeBullet, e, overrides, count);
 }
 
 std::vector<double> apexes(double e, const Overrides& overrides, int count) {
@@ -47,15 +23,7 @@ std::vector<double> apexes(double e, const Overrides& overrides, int count) {
 }
 
 void printApexTable(double e, const char* label, const Overrides& overrides) {
-    const DropResult r = ballDrop(e, overrides, 5);
-    const auto& a = r.apexes;
-    std::printf("| %.1f | %s | %d |", e, label, r.events);
-    for (std::size_t n = 0; n < 5; ++n) {
-        const double ideal = std::pow(e, 2.0 * (n + 1));
-        if (n < a.size()) std::printf(" %.4f (%+.1f %%) |", a[n], 100 * (a[n] / ideal - 1));
-        else std::printf(" - |");
-    }
-    std::printf("\n");
+    printApexRow(e, label, ballDrop(e, overrides, 5));
 }
 
 TEST(BulletBaseline, BallDropApexes) {

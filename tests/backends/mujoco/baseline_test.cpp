@@ -18,39 +18,8 @@ using Overrides = std::vector<std::pair<std::string, std::string>>;
 // Ball r = 0.1 m, m = 1 kg, bottom h = 1 m above the floor (top face z = 0), both materials e.
 // Apex n = the flight's highest gap, from the last frame before the vertical velocity turns:
 // gap + vz^2 / (2 g) (exact for the ballistic arc; frame sampling would lose up to 0.3 mm).
-struct DropResult {
-    std::vector<double> apexes;
-    int events = 0;
-};
-
 DropResult ballDrop(double e, const Overrides& overrides, int count) {
-    Scene scene = emptyScene(e, 0.5);
-    addFloor(scene);
-    const int ball = addBall(scene, "ball", 0.1, 1.0, Vec3(0, 0, 1.1));
-    auto backend = makeMujoco(scene, overrides);
-    DropResult r;
-    BodyState prev = backend->bodyState(ball);
-    for (int f = 0; f < 60 * 20 && static_cast<int>(r.apexes.size()) < count; ++f) {
-        backend->stepFrame(scene.frame_dt);
-        r.events += static_cast<int>(backend->takeEvents().size());
-        const BodyState now = backend->bodyState(ball);
-        if (prev.linear_velocity.z() > 0 && now.linear_velocity.z() <= 0) {
-            const double vz = prev.linear_velocity.z();
-            r.apexes.push_back(prev.pose.position.z() - 0.1 + vz * vz / (2 * 9.81));
-        }
-        prev = now;
-    }
-    return r;
-}
-
-void printApexRow(double e, const char* label, const DropResult& r) {
-    std::printf("| %.1f | %s | %d |", e, label, r.events);
-    for (std::size_t n = 0; n < 5; ++n) {
-        const double ideal = std::pow(e, 2.0 * (n + 1));
-        if (n < r.apexes.size()) std::printf(" %.4f (%+.1f %%) |", r.apexes[n], 100 * (r.apexes[n] / ideal - 1));
-        else std::printf(" - |");
-    }
-    std::printf("\n");
+    return test::ballDrop(&makeMujoco, e, overrides, count, ApexReading::Ballistic);
 }
 
 TEST(MujocoBaseline, BallDropApexes) {

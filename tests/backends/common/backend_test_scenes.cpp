@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+#include "backend_test_scenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "vroc/core/backend_registry.h"
+
+namespace vroc::test {
+
+Scene emptyScene(double restitution, double friction) {
+    Scene s;
+    s.name = "test";
+    s.gravity = Vec3(0, 0, -9.81);
+    s.frame_dt = 1.0 / 60.0;
+    s.collision_distance = 1e-3;
+    s.materials.push_back({"default", restitution, friction});
+    return s;
+}
+
+int addMaterial(Scene& scene, const std::string& name, double restitution, double friction) {
+    scene.materials.push_back({name, restitution, friction});
+    return static_cast<int>(scene.materials.size()) - 1;
+}
+
+static int push(Scene& scene, Body b) {
+    scene.bodies.push_back(std::move(b));
+    return static_cast<int>(scene.bodies.size()) - 1;
+}
+
+int addFloor(Scene& scene, int material) {
+    Body b;
+    b.name = "floor";
+    b.role = BodyRole::Real;
+    b.material = material;
+    b.shape = Shape::box(Vec3(10, 10, 0.5));
+    b.pose.position = Vec3(0, 0, -0.5);
+    return push(scene, std::move(b));
+}
+
+int addBall(Scene& scene, const std::string& name, double radius, double mass, const Vec3& position, int material) {
+    Body b;
+    b.name = name;
+    b.material = material;
+    b.shape = Shape::sphere(radius);
+    b.pose.position = position;
+    b.mass_properties.mass = mass;
+    b.mass_properties.volume = 4.0 / 3.0 * M_PI * radius * radius * radius;
+    b.mass_properties.inertia = Mat3::Identity() * (0.4 * mass * radius * radius);
+    return push(scene, std::move(b));
+}
+
+Mat3 cuboidInertia(const Vec3& h, double m) {
+    return Vec3(m / 3 * (h.y() * h.y() + h.z() * h.z()), m / 3 * (h.x() * h.x() + h.z() * h.z()),
+                m / 3 * (h.x() * h.x() + h.y() * h.y()))
+        .asDiagonal();
+}
+
+int addBox(Scene& scene, const std::string& name, const Vec3& half, double mass, const Vec3& position, int material) {
+    Body b;
+    b.name = name;
+    b.material = material;
+    b.shape = Shape::box(half);
+    b.pose.position = position;
+    b.mass_properties.mass = mass;
+    b.mass_properties.volume = 8 * half.prod();
+    b.mass_properties.inertia = cuboidInertia(half, mass);
+    return push(scene, std::move(b));
+}
+
+ConvexPolyhedron cuboidHull(const Vec3& half, const Quat& rot, const Vec3& centre) {
+    ConvexPolyhedron p;
+    for (int i = 0; i < 8; ++i) {
+        const Vec3 local((i & 1) ? half.x() : -half.x(), (i & 2) ? half.y() : -half.y(), (i & 4) ? half.z() : -half.z());
+        p.vertices.push_back(rot * local + centre);
+    }
+    // Faces counter-clockwise seen from outside: -x, +x, -y, +y, -z, +z.
+    p.faces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+    const Vec3 axes[6] = {-Vec3::UnitX(), Vec3::UnitX(), -Vec3::UnitY(), Vec3::UnitY(), -Vec3::UnitZ(), Vec3::UnitZ()};
+    for (const Vec3& axis : axes) {
+        const Vec3 n = rot * axis;
+        p.face_normals.push_back(n);
+        p.face_offsets.push_back(n.dot(centre) + std::abs(axis.dot(half)));
+    }
+    return p;
+}
+
+int addHullCuboid(Scene& scene, const std::string& name, const Vec3& half, double mass, const Pose& pose,
+                  const Quat& rot, const Vec3& centre, int material) {
+    Body b;
+    b.name = name;
+    b.material = material;
+    b.shape = Shape::convexHull(cuboidHull(half, rot, centre));
+    b.pose = pose;
+    b.mass_properties.mass = mass;
+    b.mass_properties.volume = 8 * half.prod();
+    b.mass_properties.center_of_mass = centre;
+    const Mat3 R = rot.toRotationMatrix();
+    b.mass_properties.inertia = R * cuboidInertia(half, mass) * R.transpose();
+    return push(scene, std::move(b));
+}
+
+std::unique_ptr<Backend> makeRegistered(const std::string& name, const Scene& scene, const Overrides& overrides) {
+    const BackendInfo& info = BackendRegistry::global().require(name);
+    return info.create(scene, resolveSettings(info.settings, overrides));
+}
+
+DropResult ballDrop(const BackendFactory& make, double e, const Overrides& overrides, int count, ApexReading reading) {
+    Scene scene = emptyScene(e, 0.5);
+    addFloor(scene);
+    const int ball = addBall(scene, "ball", 0.1, 1.0, Vec3(0, 0, 1.1));
+    auto backend = make(scene, overrides);
+    DropResult r;
+    BodyState prev = backend->bodyState(ball);
+    for (int f = 0; f < 60 * 20 && static_cast<int>(r.apexes.size()) < count; ++f) {
+        backend->stepFrame(scene.frame_dt);
+        r.events += static_cast<int>(backend->takeEvents().size());
+        const BodyState now = backend->bodyState(ball);
+        if (prev.linear_velocity.z() > 0 && now.linear_velocity.z() <= 0) {
+            const double vz = prev.linear_velocity.z();
+            r.apexes.push_back(reading == ApexReading::FrameMax
+                                   ? std::max(prev.pose.position.z(), now.pose.position.z()) - 0.1
+                                   : prev.pose.position.z() - 0.1 + vz * vz / (2 * 9.81));
+        }
+        prev = now;
+    }
+    return r;
+}
+
+void printApexRow(double e, const char* label, const DropResult& r) {
+    std::printf("| %.1f | %s | %d |", e, label, r.events);
+    for (std::size_t n = 0; n < 5; ++n) {
+        const double ideal = std::pow(e, 2.0 * static_cast<double>(n + 1));
+        if (n < r.apexes.size()) std::printf(" %.4f (%+.1f %%) |", r.apexes[n], 100 * (r.apexes[n] / ideal - 1));
+        else std::printf(" - |");
+    }
+    std::printf("\n");
+}
+
+}  // namespace vroc::test

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// Scenes for the reference backends' tests (bullet, ode, mujoco), built in code with closed-form
+// mass properties: one home for the builders; each suite adds its own make<Backend>().
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vroc/core/backend.h"
+#include "vroc/core/scene.h"
+
+namespace vroc::test {
+
+/// Empty scene: gravity (0, 0, -9.81), frame dt 1/60 s, collision distance 1 mm, material "default".
+Scene emptyScene(double restitution = 0.5, double friction = 0.5);
+/// Adds a material, returns its index.
+int addMaterial(Scene& scene, const std::string& name, double restitution, double friction);
+/// Real box 20 x 20 x 1 m whose top face is the plane z = 0.
+int addFloor(Scene& scene, int material = 0);
+/// Virtual sphere [m, kg], solid: I = 2/5 m r^2.
+int addBall(Scene& scene, const std::string& name, double radius, double mass, const Vec3& position, int material = 0);
+/// Virtual box shape [half extents m]: I = m/3 (b^2 + c^2) ...
+int addBox(Scene& scene, const std::string& name, const Vec3& half, double mass, const Vec3& position, int material = 0);
+/// A cuboid as a hull (faces and planes filled in by hand), vertices rotated by `rot` and shifted
+/// by `centre` in the body frame: COM = centre, inertia R diag R^T.
+ConvexPolyhedron cuboidHull(const Vec3& half, const Quat& rot = Quat::Identity(), const Vec3& centre = Vec3::Zero());
+int addHullCuboid(Scene& scene, const std::string& name, const Vec3& half, double mass, const Pose& pose,
+                  const Quat& rot_in_body = Quat::Identity(), const Vec3& centre_in_body = Vec3::Zero(),
+                  int material = 0);
+/// Solid cuboid inertia about its centre, in its own axes [kg m^2].
+Mat3 cuboidInertia(const Vec3& half, double mass);
+
+/// `key=value` setting overrides for a backend.
+using Overrides = std::vector<std::pair<std::string, std::string>>;
+
+/// Creates the registered backend `name` (registered by the caller) with overrides.
+std::unique_ptr<Backend> makeRegistered(const std::string& name, const Scene& scene, const Overrides& overrides = {});
+
+/// Makes a backend for a scene with overrides (make<Backend>()).
+using BackendFactory = std::function<std::unique_ptr<Backend>(const Scene&, const Overrides&)>;
+
+/// A ball drop: ball r = 0.1 m, m = 1 kg, bottom 1 m above the floor (top face z = 0), both
+/// materials restitution e, up to 20 s or `count` apexes; the events counted meanwhile.
+struct DropResult {
+    std::vector<double> apexes;   ///< [m] bottom heights at the apexes
+    int events = 0;
+};
+/// How an apex is read from frames: the larger of the two frame heights around the turn (as
+/// trajectory.csv would show it), or the last rising frame's height plus vz^2 / (2 g) (the
+/// ballistic arc's exact top; frame sampling loses up to 0.3 mm).
+enum class ApexReading { FrameMax, Ballistic };
+DropResult ballDrop(const BackendFactory& make, double e, const Overrides& overrides, int count,
+                    ApexReading reading = ApexReading::FrameMax);
+/// One Markdown row: | e | label | events | apex n (deviation from e^(2n) h) ... | for 5 apexes.
+void printApexRow(double e, const char* label, const DropResult& r);
+
+}  // namespace vroc::test
