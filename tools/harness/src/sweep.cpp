@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
 #include "vroc/harness/divergence.h"
 #include "vroc/harness/pareto.h"
 #include "vroc/harness/robustness.h"
 #include "vroc/harness/run_trace.h"
+#include "vroc/harness/scene_support.h"
 #include "vroc/harness/sweep_curves.h"
 #include "vroc/harness/timing_stats.h"
 
@@ -70,8 +72,18 @@ SweepScene loadSweepScene(const std::string& source) {
     return {loadScene(source), std::nullopt, source};
 }
 
-Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& backends, const SweepOptions& o) {
+Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requested, const SweepOptions& o) {
     const Scene& scene = in.scene;
+    // A backend that cannot represent the scene is left out (and named); an approximated one runs.
+    std::vector<SelectedBackend> backends;
+    Json support = Json::object();
+    for (const SelectedBackend& b : requested) {
+        const SceneSupport s = sceneSupport(scene, b.info->capabilities);
+        support[b.info->name] = supportText(s);
+        if (s.level != Support::Unsupported) backends.push_back(b);
+        else if (o.progress) progressLine("sweep", b.info->name + " left out: " + supportText(s));
+    }
+    if (backends.empty()) throw InputError("scene '" + scene.name + "': no selected backend can represent it");
     std::vector<double> dts = o.dts.empty() ? defaultSweepSteps() : o.dts;
     std::sort(dts.begin(), dts.end(), std::greater<>());
     const double dt_max = dts.front();
@@ -84,6 +96,7 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& backends
     doc["title"] = "speed vs accuracy on '" + scene.name + "'";
     doc["scene"] = {{"name", scene.name}, {"source", in.source}, {"sha256", scene.source_sha256}, {"bodies", scene.bodies.size()}};
     doc["backends"] = backendsJson(backends);
+    doc["support"] = support;
     doc["parameters"] = {{"dts_s", dts}, {"reference_dt_s", ref_dt}, {"duration_s", o.duration}, {"windows", plan.anchors.size()},
                          {"window_s", plan.window_coarse * dt_max}, {"robustness_dts_s", robust_dts},
                          {"closed_form", in.closed_form ? Json(in.closed_form->id + ": " + in.closed_form->closed_form) : Json(nullptr)},
