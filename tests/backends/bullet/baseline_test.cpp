@@ -85,27 +85,15 @@ struct Percentiles { double p50, p90, p99; };
 
 Percentiles frameTimes(const Scene& scene, int frames) {
     auto backend = makeBullet(scene);
-    std::vector<double> us;
-    for (int f = 0; f < frames; ++f) {
-        const auto t0 = std::chrono::steady_clock::now();
-        backend->stepFrame(scene.frame_dt);
-        us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
-    }
-    std::sort(us.begin(), us.end());
-    auto at = [&](double q) { return us[static_cast<std::size_t>(q * (us.size() - 1))]; };
-    return {at(0.5), at(0.9), at(0.99)};
+    const TimedRun run = timedRun(*backend, scene, frames);
+    return {run.quantileUs(0.5), run.quantileUs(0.9), run.quantileUs(0.99)};
 }
 
 TEST(BulletBaseline, WallTimePerFrame) {
     Scene drop = emptyScene(0.5, 0.5);
     addFloor(drop);
     addBall(drop, "ball", 0.1, 1.0, Vec3(0, 0, 1.1));
-    Scene pile = emptyScene(0.5, 0.5);
-    addFloor(pile);
-    for (int i = 0; i < 64; ++i)
-        addHullCuboid(pile, std::string("c").append(std::to_string(i)), Vec3(0.05, 0.05, 0.05), 1.0,
-                      Pose{Vec3(0.25 * (i % 4), 0.25 * ((i / 4) % 4), 0.2 + 0.25 * (i / 16)),
-                           Quat(Eigen::AngleAxisd(0.1 * i, Vec3(1, 1, 1).normalized()))});
+    const Scene pile = fallingHullCubes();
     const Percentiles a = frameTimes(drop, 600), b = frameTimes(pile, 600);
     std::printf("| scene (600 frames of 1/60 s, substeps 1) | p50 us | p90 us | p99 us |\n|---|---|---|---|\n");
     std::printf("| ball drop (1 ball + floor) | %.1f | %.1f | %.1f |\n", a.p50, a.p90, a.p99);

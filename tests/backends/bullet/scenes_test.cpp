@@ -17,18 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> sceneFiles() {
-    std::vector<fs::path> files;
-    const fs::path dir = fs::path(VROC_SOURCE_DIR) / "scenes";
-    if (fs::exists(dir))
-        for (const auto& entry : fs::directory_iterator(dir))
-            if (entry.path().extension() == ".json") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
 TEST(BulletScenes, EveryShippedSceneRunsCleanly) {
-    const auto files = sceneFiles();
+    const auto files = shippedSceneFiles();
     if (files.empty()) GTEST_SKIP() << "no scenes/*.json yet";
     std::printf("| scene | bodies | frames | wall s | p50 us/frame | events |\n|---|---|---|---|---|---|\n");
     for (const fs::path& file : files) {
@@ -36,25 +26,15 @@ TEST(BulletScenes, EveryShippedSceneRunsCleanly) {
         const Scene scene = loadScene(file.string());
         auto backend = makeBullet(scene);
         const int frames = static_cast<int>(std::lround(3.0 / scene.frame_dt));
-        std::vector<double> us;
-        std::size_t events = 0;
-        for (int f = 0; f < frames; ++f) {
-            const auto t0 = std::chrono::steady_clock::now();
-            backend->stepFrame(scene.frame_dt);
-            us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
-            events += backend->takeEvents().size();
-        }
+        const TimedRun run = timedRun(*backend, scene, frames);
         for (int i = 0; i < backend->bodyCount(); ++i) {
             const BodyState s = backend->bodyState(i);
             ASSERT_TRUE(s.pose.position.allFinite() && s.linear_velocity.allFinite() &&
                         s.angular_velocity.allFinite()) << "body " << scene.bodies[i].name;
         }
         for (const auto& [kind, count] : backend->warnings()) EXPECT_EQ(count, 0u) << kind;
-        double wall = 0;
-        for (double u : us) wall += u * 1e-6;
-        std::sort(us.begin(), us.end());
         std::printf("| %s | %zu | %d | %.3f | %.1f | %zu |\n", file.filename().c_str(), scene.bodies.size(), frames,
-                    wall, us[us.size() / 2], events);
+                    run.totalSeconds(), run.quantileUs(0.5), run.events);
     }
 }
 

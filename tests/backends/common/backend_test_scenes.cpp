@@ -2,6 +2,7 @@
 #include "backend_test_scenes.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -104,6 +105,50 @@ int addHullCuboid(Scene& scene, const std::string& name, const Vec3& half, doubl
 std::unique_ptr<Backend> makeRegistered(const std::string& name, const Scene& scene, const Overrides& overrides) {
     const BackendInfo& info = BackendRegistry::global().require(name);
     return info.create(scene, resolveSettings(info.settings, overrides));
+}
+
+std::vector<std::filesystem::path> shippedSceneFiles() {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> files;
+    const fs::path dir = fs::path(VROC_SOURCE_DIR) / "scenes";
+    if (fs::exists(dir))
+        for (const auto& entry : fs::directory_iterator(dir))
+            if (entry.path().extension() == ".json") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+Scene fallingHullCubes() {
+    Scene pile = emptyScene(0.5, 0.5);
+    addFloor(pile);
+    for (int i = 0; i < 64; ++i)
+        addHullCuboid(pile, std::string("c").append(std::to_string(i)), Vec3(0.05, 0.05, 0.05), 1.0,
+                      Pose{Vec3(0.25 * (i % 4), 0.25 * ((i / 4) % 4), 0.2 + 0.25 * (i / 16)),
+                           Quat(Eigen::AngleAxisd(0.1 * i, Vec3(1, 1, 1).normalized()))});
+    return pile;
+}
+
+double TimedRun::totalSeconds() const {
+    double s = 0;
+    for (double u : frame_us) s += u * 1e-6;
+    return s;
+}
+
+double TimedRun::quantileUs(double q) const {
+    std::vector<double> sorted = frame_us;
+    std::sort(sorted.begin(), sorted.end());
+    return sorted[static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1))];
+}
+
+TimedRun timedRun(Backend& backend, const Scene& scene, int frames) {
+    TimedRun r;
+    for (int f = 0; f < frames; ++f) {
+        const auto t0 = std::chrono::steady_clock::now();
+        backend.stepFrame(scene.frame_dt);
+        r.frame_us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+        r.events += backend.takeEvents().size();
+    }
+    return r;
 }
 
 DropResult ballDrop(const BackendFactory& make, double e, const Overrides& overrides, int count, ApexReading reading) {

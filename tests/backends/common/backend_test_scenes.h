@@ -3,6 +3,7 @@
 // mass properties: one home for the builders; each suite adds its own make<Backend>().
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -38,6 +39,22 @@ using Overrides = std::vector<std::pair<std::string, std::string>>;
 
 /// Creates the registered backend `name` (registered by the caller) with overrides.
 std::unique_ptr<Backend> makeRegistered(const std::string& name, const Scene& scene, const Overrides& overrides = {});
+
+/// The top-level shipped scenes, scenes/*.json, sorted.
+std::vector<std::filesystem::path> shippedSceneFiles();
+
+/// 64 hull cubes (0.1 m) in a 4 x 4 x 4 lattice, each turned a little more, falling on the floor.
+Scene fallingHullCubes();
+
+/// Wall time [us] of every stepFrame over `frames` frames, and the events taken meanwhile.
+struct TimedRun {
+    std::vector<double> frame_us;   ///< in step order
+    std::size_t events = 0;
+    double totalSeconds() const;
+    /// The q-quantile (0..1) of the frame times (nearest rank below).
+    double quantileUs(double q) const;
+};
+TimedRun timedRun(Backend& backend, const Scene& scene, int frames);
 
 /// Makes a backend for a scene with overrides (make<Backend>()).
 using BackendFactory = std::function<std::unique_ptr<Backend>(const Scene&, const Overrides&)>;

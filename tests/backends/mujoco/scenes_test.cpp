@@ -19,19 +19,9 @@ TEST(MujocoScenes, EveryShippedSceneRunsCleanly) {
         const Scene scene = loadScene(std::string(VROC_SOURCE_DIR) + "/scenes/" + name + ".json");
         auto backend = makeMujoco(scene);
         const int frames = 180;
-        std::vector<double> us;
-        std::size_t events = 0;
-        const auto start = std::chrono::steady_clock::now();
-        for (int f = 0; f < frames; ++f) {
-            const auto t0 = std::chrono::steady_clock::now();
-            backend->stepFrame(scene.frame_dt);
-            us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
-            events += backend->takeEvents().size();
-        }
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::sort(us.begin(), us.end());
-        std::printf("| %s.json | %zu | %d | %.3f | %.1f | %.1f | %zu |\n", name, scene.bodies.size(), frames, wall,
-                    us[us.size() / 2], us[us.size() * 9 / 10], events);
+        const TimedRun run = timedRun(*backend, scene, frames);
+        std::printf("| %s.json | %zu | %d | %.3f | %.1f | %.1f | %zu |\n", name, scene.bodies.size(), frames,
+                    run.totalSeconds(), run.quantileUs(0.5), run.quantileUs(0.9), run.events);
         for (const auto& [warning, count] : backend->warnings()) EXPECT_EQ(count, 0u) << name << ": " << warning;
         for (int i = 0; i < backend->bodyCount(); ++i) {
             const BodyState s = backend->bodyState(i);

@@ -47,27 +47,7 @@ TEST(OdeBaseline, BallDropApexes) {
 }
 
 double restingGap(const Shape& shape, const Vec3& at, const Overrides& o, bool hull_floor = false) {
-    Scene scene = emptyScene(0.0, 0.5);
-    if (hull_floor) {
-        Body floor;
-        floor.name = "slab";
-        floor.role = BodyRole::Real;
-        floor.shape = Shape::convexHull(cuboidHull(Vec3(1, 1, 0.1)));
-        floor.pose.position = Vec3(0, 0, -0.1);
-        scene.bodies.push_back(floor);
-    } else {
-        addFloor(scene);
-    }
-    Body b;
-    b.name = "cube";
-    b.shape = shape;
-    b.pose.position = at;
-    b.mass_properties.mass = 1.0;
-    b.mass_properties.inertia = cuboidInertia(Vec3(0.1, 0.1, 0.1), 1.0);
-    scene.bodies.push_back(b);
-    auto backend = makeOde(scene, o);
-    for (int f = 0; f < 120; ++f) backend->stepFrame(scene.frame_dt);
-    const BodyState s = backend->bodyState(1);
+    const BodyState s = restedCube(shape, at, o, hull_floor);
     std::printf(" tilt %.2e rad, speed %.1e m/s |", s.pose.orientation.angularDistance(Quat::Identity()),
                 s.linear_velocity.norm());
     return s.pose.position.z() - 0.1;
@@ -142,27 +122,15 @@ struct Percentiles {
 
 Percentiles frameTimes(const Scene& scene, int frames, const Overrides& o) {
     auto backend = makeOde(scene, o);
-    std::vector<double> us;
-    for (int f = 0; f < frames; ++f) {
-        const auto t0 = std::chrono::steady_clock::now();
-        backend->stepFrame(scene.frame_dt);
-        us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
-    }
-    std::sort(us.begin(), us.end());
-    auto at = [&](double q) { return us[static_cast<std::size_t>(q * (us.size() - 1))]; };
-    return {at(0.5), at(0.9), at(0.99), backend->warnings().at("ill_conditioned_solve")};
+    const TimedRun run = timedRun(*backend, scene, frames);
+    return {run.quantileUs(0.5), run.quantileUs(0.9), run.quantileUs(0.99), backend->warnings().at("ill_conditioned_solve")};
 }
 
 TEST(OdeBaseline, WallTimePerFrame) {
     Scene drop = emptyScene(0.5, 0.5);
     addFloor(drop);
     addBall(drop, "ball", 0.1, 1.0, Vec3(0, 0, 1.1));
-    Scene pile = emptyScene(0.5, 0.5);
-    addFloor(pile);
-    for (int i = 0; i < 64; ++i)
-        addHullCuboid(pile, std::string("c").append(std::to_string(i)), Vec3(0.05, 0.05, 0.05), 1.0,
-                      Pose{Vec3(0.25 * (i % 4), 0.25 * ((i / 4) % 4), 0.2 + 0.25 * (i / 16)),
-                           Quat(Eigen::AngleAxisd(0.1 * i, Vec3(1, 1, 1).normalized()))});
+    const Scene pile = fallingHullCubes();
     std::printf("| scene (600 frames of 1/60 s) | settings | p50 us | p90 us | p99 us | ill_conditioned_solve |\n"
                 "|---|---|---|---|---|---|\n");
     for (const char* stepper : {"quickstep", "step"}) {
@@ -178,12 +146,7 @@ TEST(OdeBaseline, WallTimePerFrame) {
 
 TEST(OdeBaseline, EveryShippedSceneRunsCleanly) {
     namespace fs = std::filesystem;
-    std::vector<fs::path> files;
-    const fs::path dir = fs::path(VROC_SOURCE_DIR) / "scenes";
-    if (fs::exists(dir))
-        for (const auto& entry : fs::directory_iterator(dir))
-            if (entry.path().extension() == ".json") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
+    const std::vector<fs::path> files = shippedSceneFiles();
     if (files.empty()) GTEST_SKIP() << "no scenes/*.json";
     std::printf("| scene | bodies | frames | wall s | p50 us/frame | events |\n|---|---|---|---|---|---|\n");
     for (const fs::path& file : files) {
@@ -192,25 +155,15 @@ TEST(OdeBaseline, EveryShippedSceneRunsCleanly) {
         if (scene.bodies.size() > 200) continue;   // the suite stays fast
         auto backend = makeOde(scene);
         const int frames = static_cast<int>(std::lround(3.0 / scene.frame_dt));
-        std::vector<double> us;
-        std::size_t events = 0;
-        for (int f = 0; f < frames; ++f) {
-            const auto t0 = std::chrono::steady_clock::now();
-            backend->stepFrame(scene.frame_dt);
-            us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
-            events += backend->takeEvents().size();
-        }
+        const TimedRun run = timedRun(*backend, scene, frames);
         for (int i = 0; i < backend->bodyCount(); ++i) {
             const BodyState s = backend->bodyState(i);
             ASSERT_TRUE(s.pose.position.allFinite() && s.linear_velocity.allFinite() && s.angular_velocity.allFinite())
                 << "body " << scene.bodies[static_cast<std::size_t>(i)].name;
         }
         for (const auto& [kind, count] : backend->warnings()) EXPECT_EQ(count, 0u) << kind;
-        double wall = 0;
-        for (double u : us) wall += u * 1e-6;
-        std::sort(us.begin(), us.end());
         std::printf("| %s | %zu | %d | %.3f | %.1f | %zu |\n", file.filename().c_str(), scene.bodies.size(), frames,
-                    wall, us[us.size() / 2], events);
+                    run.totalSeconds(), run.quantileUs(0.5), run.events);
     }
 }
 

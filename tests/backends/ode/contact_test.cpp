@@ -17,18 +17,7 @@ constexpr double kG = 9.81;
 // Centre height above 0.1 (the half size) of a 0.2 m cube released face-down 2 cm above the
 // floor, e = 0, after 2 s.
 double restingGap(const Shape& shape, const Vec3& at = Vec3(0, 0, 0.12), const Overrides& o = {}) {
-    Scene scene = emptyScene(0.0, 0.5);
-    addFloor(scene);
-    Body b;
-    b.name = "cube";
-    b.shape = shape;
-    b.pose.position = at;
-    b.mass_properties.mass = 1.0;
-    b.mass_properties.inertia = cuboidInertia(Vec3(0.1, 0.1, 0.1), 1.0);
-    scene.bodies.push_back(b);
-    auto backend = makeOde(scene, o);
-    for (int f = 0; f < 120; ++f) backend->stepFrame(scene.frame_dt);
-    return backend->bodyState(1).pose.position.z() - 0.1;
+    return restedCube(shape, at, o).pose.position.z() - 0.1;
 }
 
 TEST(OdeContact, BoxRestsOnItsFace) {

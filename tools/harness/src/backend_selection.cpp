@@ -7,6 +7,7 @@
 
 #include "vroc/core/backend_registry.h"
 #include "vroc/core/errors.h"
+#include "vroc/harness/scene_support.h"
 
 namespace vroc::harness {
 
@@ -50,6 +51,20 @@ Json backendsJson(const std::vector<SelectedBackend>& backends) {
     for (const SelectedBackend& b : backends)
         out.push_back({{"name", b.info->name}, {"version", b.info->version}, {"description", b.info->description},
                        {"settings", b.settings.values()}, {"deviations", b.info->deviations}});
+    return out;
+}
+
+std::vector<SelectedBackend> representableBackends(const Scene& scene, const std::vector<SelectedBackend>& requested,
+                                                   const std::string& command, bool progress, Json& support) {
+    std::vector<SelectedBackend> out;
+    support = Json::object();
+    for (const SelectedBackend& b : requested) {
+        const SceneSupport s = sceneSupport(scene, b.info->capabilities);
+        support[b.info->name] = supportText(s);
+        if (s.level != Support::Unsupported) out.push_back(b);
+        else if (progress) progressLine(command, b.info->name + " left out: " + supportText(s));
+    }
+    if (out.empty()) throw InputError("scene '" + scene.name + "': no selected backend can represent it");
     return out;
 }
 

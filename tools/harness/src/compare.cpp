@@ -14,7 +14,6 @@
 #include "vroc/harness/event_timing.h"
 #include "vroc/harness/html_report.h"
 #include "vroc/harness/penetration.h"
-#include "vroc/harness/scene_support.h"
 #include "vroc/harness/series_tools.h"
 #include "vroc/harness/timing_stats.h"
 
@@ -197,15 +196,8 @@ Json consensusJson(const Scene& scene, const std::vector<SelectedBackend>& backe
 Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& requested, const CompareOptions& o,
                   const std::filesystem::path& csv_dir) {
     // A backend that cannot represent the scene is left out (and named); an approximated one runs.
-    std::vector<SelectedBackend> backends;
-    Json support = Json::object();
-    for (const SelectedBackend& b : requested) {
-        const SceneSupport s = sceneSupport(scene, b.info->capabilities);
-        support[b.info->name] = supportText(s);
-        if (s.level != Support::Unsupported) backends.push_back(b);
-        else if (o.progress) progressLine("compare", b.info->name + " left out: " + supportText(s));
-    }
-    if (backends.empty()) throw InputError("scene '" + scene.name + "': no selected backend can represent it");
+    Json support;
+    const std::vector<SelectedBackend> backends = representableBackends(scene, requested, "compare", o.progress, support);
     const double dt = o.frame_dt.value_or(scene.frame_dt);
     const std::int64_t frames = framesFor(o.duration, dt);
     const std::int64_t window_frames = std::max<std::int64_t>(1, framesFor(o.window, dt));

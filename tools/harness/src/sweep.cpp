@@ -4,13 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
 #include "vroc/harness/divergence.h"
 #include "vroc/harness/pareto.h"
 #include "vroc/harness/robustness.h"
 #include "vroc/harness/run_trace.h"
-#include "vroc/harness/scene_support.h"
 #include "vroc/harness/sweep_curves.h"
 #include "vroc/harness/timing_stats.h"
 
@@ -75,15 +73,8 @@ SweepScene loadSweepScene(const std::string& source) {
 Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requested, const SweepOptions& o) {
     const Scene& scene = in.scene;
     // A backend that cannot represent the scene is left out (and named); an approximated one runs.
-    std::vector<SelectedBackend> backends;
-    Json support = Json::object();
-    for (const SelectedBackend& b : requested) {
-        const SceneSupport s = sceneSupport(scene, b.info->capabilities);
-        support[b.info->name] = supportText(s);
-        if (s.level != Support::Unsupported) backends.push_back(b);
-        else if (o.progress) progressLine("sweep", b.info->name + " left out: " + supportText(s));
-    }
-    if (backends.empty()) throw InputError("scene '" + scene.name + "': no selected backend can represent it");
+    Json support;
+    const std::vector<SelectedBackend> backends = representableBackends(scene, requested, "sweep", o.progress, support);
     std::vector<double> dts = o.dts.empty() ? defaultSweepSteps() : o.dts;
     std::sort(dts.begin(), dts.end(), std::greater<>());
     const double dt_max = dts.front();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "vroc/core/backend.h"
+#include "vroc/core/scene.h"
 #include "vroc/core/settings.h"
 #include "vroc/harness/metrics_document.h"
 
@@ -23,6 +24,12 @@ std::vector<SelectedBackend> selectBackends(const std::string& list, const std::
 
 /// [{name, version, description, settings{key: value}}] for metrics.json.
 Json backendsJson(const std::vector<SelectedBackend>& backends);
+
+/// The backends of `requested` that can represent `scene` by their declared capabilities
+/// (scene_support.h); the others are left out and, with `progress`, named on stderr. `support` gets
+/// every requested backend's supportText. Throws InputError when none can.
+std::vector<SelectedBackend> representableBackends(const Scene& scene, const std::vector<SelectedBackend>& requested,
+                                                   const std::string& command, bool progress, Json& support);
 
 /// Prints "vroc <command>: <text>" on stderr (progress of long commands).
 void progressLine(const std::string& command, const std::string& text);
