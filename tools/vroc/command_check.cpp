@@ -12,11 +12,13 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/atomic_output.h"
 #include "vroc/harness/check.h"
 #include "vroc/harness/check_suite.h"
 #include "vroc/harness/html_report.h"
+#include "vroc/harness/mpi_world.h"
 #include "vroc/harness/output_dir.h"
 
 namespace vroc::cli {
@@ -28,6 +30,7 @@ struct CheckArgs {
     std::string scenes_dir;   ///< --scenes-dir ("" : scenes/stress here, else beside the program)
     std::vector<std::string> assignments;
     harness::CheckOptions options;
+    PoolArgs pool;
     bool quiet = false;
 };
 
@@ -65,8 +68,13 @@ int check(CheckArgs& a, const Context& context) {
     if (stress) a.options.scenes_dir = stressScenesDir(a.scenes_dir);
     const std::string set = std::string(a.options.long_set ? "long" : "default") + (stress ? "-stress" : "");
     const auto out = a.out_dir.empty() ? harness::defaultOutputDir("check", set) : std::filesystem::path(a.out_dir);
-    recording::prepareOutputDirectory(out);
-    const harness::Json doc = harness::runCheckSuite(backends, a.options);
+    prepareRunsOutput(out, a.pool, !a.out_dir.empty());
+    std::shared_ptr<ProgressBar> bar;
+    harness::RunPool pool = makeRunPool(a.pool, out, harness::checkPlan(backends, a.options), "check",
+                                        !a.quiet && context.stderr_is_terminal, bar);
+    const harness::Json doc = harness::runCheckSuite(backends, a.options, pool);
+    bar->finish();
+    if (!harness::mpi::isRoot()) return harness::checkExitCode(doc);   // rank 0 writes the report
     harness::writeDocument(doc, out / "metrics.json");
     const auto report = harness::writeReport({doc}, out);
     std::fputs(harness::checkTableText(doc).c_str(), stdout);
@@ -94,6 +102,7 @@ Action setup(CLI::App& sub, const Context& context) {
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress lines");
+    addPoolOptions(sub, a->pool);
     sub.footer("Prints the check x backend table; writes metrics.json and report.html.\n"
                "Stress rows are targets (not required for native); rows marked info are reported, not judged.\n"
                "Exit code 1 when a check required for native fails on the native backend.");

@@ -9,9 +9,11 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
 #include "vroc/harness/compare.h"
+#include "vroc/harness/mpi_world.h"
 #include "vroc/harness/output_dir.h"
 
 namespace vroc::cli {
@@ -24,6 +26,7 @@ struct CompareArgs {
     std::vector<std::string> assignments;
     harness::CompareOptions options;
     std::optional<double> dt;
+    PoolArgs pool;
     bool quiet = false;
 };
 
@@ -37,7 +40,13 @@ int compare(CompareArgs& a, const Context& context) {
     a.options.progress = !a.quiet;
     a.options.command_line = context.command_line;
     const auto out = a.out_dir.empty() ? harness::defaultOutputDir("compare", scene.name) : std::filesystem::path(a.out_dir);
-    const auto report = harness::runCompare(scene, backends, a.options, out);
+    prepareRunsOutput(out, a.pool, !a.out_dir.empty());
+    std::shared_ptr<ProgressBar> bar;
+    harness::RunPool pool = makeRunPool(a.pool, out, harness::comparePlan(scene, backends, a.options), "compare",
+                                        !a.quiet && context.stderr_is_terminal, bar);
+    const auto report = harness::runCompare(scene, backends, a.options, out, pool);
+    bar->finish();
+    if (!harness::mpi::isRoot()) return 0;
     std::printf("vroc compare: report %s\n", std::filesystem::absolute(report).lexically_normal().string().c_str());
     return 0;
 }
@@ -55,6 +64,7 @@ Action setup(CLI::App& sub, const Context& context) {
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress lines");
+    addPoolOptions(sub, a->pool);
     sub.footer("Writes metrics.json, <backend>/{trajectory,events,step_times}.csv and report.html.");
     return [a, context] { return compare(*a, context); };
 }

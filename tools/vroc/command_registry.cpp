@@ -6,7 +6,7 @@
 #define VROC_COMMAND_LIST(X) \
     X(Backends)              \
     X(Run)                   \
-    X(Compare) X(Check) X(Sweep) X(Report) \
+    X(Compare) X(Check) X(Sweep) X(Ensemble) X(Report) \
     X(Plugins)               \
     X(Play)
 

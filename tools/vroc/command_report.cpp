@@ -29,7 +29,7 @@ int report(const ReportArgs& a) {
 
 Action setup(CLI::App& sub, const Context&) {
     auto a = std::make_shared<ReportArgs>();
-    sub.add_option("dirs", a->dirs, "Directories of earlier compare/check/sweep runs (each holds metrics.json)")->required();
+    sub.add_option("dirs", a->dirs, "Directories of earlier compare/check/sweep/ensemble runs (each holds metrics.json)")->required();
     sub.add_option("--out,-o", a->out_dir, "Where to write report.html (default: the directory itself, or runs/report-merged for several)");
     return [a] { return report(*a); };
 }

@@ -9,9 +9,11 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/atomic_output.h"
 #include "vroc/harness/html_report.h"
+#include "vroc/harness/mpi_world.h"
 #include "vroc/harness/output_dir.h"
 #include "vroc/harness/sweep.h"
 #include "vroc/harness/sweep_curves.h"
@@ -29,6 +31,7 @@ struct SweepArgs {
     std::optional<double> target;
     std::vector<std::string> assignments;
     harness::SweepOptions options;
+    PoolArgs pool;
     bool quiet = false;
 };
 
@@ -66,8 +69,13 @@ int sweep(SweepArgs& a, const Context& context) {
     harness::sweepCurves(backends, a.options.vary);   // bad --vary fails before any file is written
     const harness::SweepScene scene = harness::loadSweepScene(a.scene);
     const auto out = a.out_dir.empty() ? harness::defaultOutputDir("sweep", scene.scene.name) : std::filesystem::path(a.out_dir);
-    recording::prepareOutputDirectory(out);
-    const harness::Json doc = harness::runSweep(scene, backends, a.options);
+    prepareRunsOutput(out, a.pool, !a.out_dir.empty());
+    std::shared_ptr<ProgressBar> bar;
+    harness::RunPool pool = makeRunPool(a.pool, out, harness::sweepPlan(scene, backends, a.options), "sweep",
+                                        !a.quiet && context.stderr_is_terminal, bar);
+    const harness::Json doc = harness::runSweep(scene, backends, a.options, pool);
+    bar->finish();
+    if (!harness::mpi::isRoot()) return 0;   // rank 0 writes the report
     harness::writeDocument(doc, out / "metrics.json");
     const auto report = harness::writeReport({doc}, out);
     for (const auto& p : doc["results"]["pareto_front"])
@@ -96,7 +104,8 @@ Action setup(CLI::App& sub, const Context& context) {
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress lines");
-    sub.footer("Writes metrics.json and report.html (speed-accuracy chart with the Pareto front, robustness limit).");
+    addPoolOptions(sub, a->pool);
+    sub.footer("Writes metrics.json and report.html (speed-accuracy chart with the Pareto front, robustness limit), and each\nfinished run to runs/ as it completes. Runs in parallel (--jobs) and over MPI ranks (mpirun -n R vroc sweep ...).");
     return [a, context] { return sweep(*a, context); };
 }
 

@@ -14,6 +14,7 @@
 #include "register_backends.h"
 #include "vroc/core/build_info.h"
 #include "vroc/core/errors.h"
+#include "vroc/harness/mpi_world.h"
 
 namespace {
 
@@ -38,9 +39,19 @@ std::string oneLine(const std::string& message) {
     return out;
 }
 
+// Under mpirun every rank meets the same bad input: only rank 0 says so. A failure while running
+// may be one rank's own, so every rank reports it, named.
 int fail(int code, const std::string& message) {
-    std::fprintf(stderr, "vroc: error: %s\n", oneLine(message).c_str());
+    const int rank = vroc::harness::mpi::rank();
+    if (code == kExitInput && rank != 0) return code;
+    const std::string who = vroc::harness::mpi::size() > 1 ? "vroc (rank " + std::to_string(rank) + ")" : "vroc";
+    std::fprintf(stderr, "%s: error: %s\n", who.c_str(), oneLine(message).c_str());
     return code;
+}
+
+// The commands whose runs RunPool spreads over ranks; rank 0 alone writes their files.
+bool runsUnderMpi(const std::string& command) {
+    return command == "sweep" || command == "check" || command == "compare" || command == "ensemble";
 }
 
 std::string shellQuoted(const std::string& word) {
@@ -63,7 +74,7 @@ std::string versionText() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int runCommand(int argc, char** argv) {
     vroc::cli::registerBackends();
     vroc::cli::Context context{joinCommandLine(argc, argv), ::isatty(STDERR_FILENO) == 1};
 
@@ -113,7 +124,13 @@ int main(int argc, char** argv) {
 
     try {
         for (const auto& entry : entries)
-            if (entry.sub->parsed()) return entry.action();
+            if (entry.sub->parsed()) {
+                if (vroc::harness::mpi::size() > 1 && !runsUnderMpi(entry.sub->get_name()))
+                    return fail(kExitInput, "`vroc " + entry.sub->get_name() +
+                                                "` does not run under mpirun (one process would write the same files as every other); "
+                                                "mpirun runs vroc sweep, check, compare and ensemble");
+                return entry.action();
+            }
         return fail(kExitInput, "no command given (see `vroc --help`)");
     } catch (const vroc::InputError& e) {
         return fail(kExitInput, e.what());
@@ -122,4 +139,16 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
         return fail(kExitRun, std::string("unexpected failure: ") + e.what());
     }
+}
+
+int main(int argc, char** argv) {
+    vroc::harness::mpi::initialize(argc, argv);
+    const int code = runCommand(argc, argv);
+    // A rank that fails may leave others waiting for it: end them all (mpirun reports the code).
+    if (code >= 2 && vroc::harness::mpi::size() > 1) {
+        std::fflush(nullptr);
+        vroc::harness::mpi::abortAll(code);
+    }
+    vroc::harness::mpi::finalize();
+    return code;
 }

@@ -15,9 +15,15 @@ public:
     ~ProgressBar();   ///< clears the line if anything was drawn
 
     void update(std::int64_t done, std::int64_t total);
+    /// "12/64 runs, 1 failed, ~3 min left" (seconds_left < 0: unknown).
+    void updateRuns(int done, int failed, int total, double seconds_left);
+
+    /// Clears the line (before printing results); later updates draw again.
+    void finish() { clear(); }
 
 private:
     void clear();
+    void draw(double fraction, const std::string& tail, bool final);
 
     bool enabled_;
     bool drawn_ = false;

@@ -9,7 +9,9 @@
 #include <set>
 #include <string>
 
+#include "vroc/core/build_info.h"
 #include "vroc/core/errors.h"
+#include "vroc/core/state_hash.h"
 #include "vroc/harness/check_suite.h"
 #include "vroc/harness/html_report.h"
 #include "vroc/harness/scene_support.h"
@@ -33,9 +35,42 @@ std::string cellResult(const Json& result) {
     return std::string(resultText(result["pass"])) + (support == "exact" ? "" : "~");
 }
 
+// One scenario on one backend: a cell per metric, and the wall time of the run.
+// A scene the backend cannot represent is reported, not run; an approximated one is run and its
+// cells say so.
+Json runCheckCell(const CheckScenario& sc, const SelectedBackend& b) {
+    const Scene scene = sc.build();
+    SceneSupport support = sceneSupport(scene, b.info->capabilities);
+    RunTrace trace;
+    const auto start = std::chrono::steady_clock::now();
+    if (support.level != Support::Unsupported) {
+        RunOptions ro;
+        ro.frame_dt = sc.frame_dt;
+        ro.frames = framesFor(sc.duration, sc.frame_dt);
+        try {
+            trace = runBackend(*b.info, scene, b.settings, ro);
+        } catch (const InputError& e) {   // refused at creation: the backend's own word
+            support = {Support::Unsupported, e.what()};
+        }
+    }
+    Json cells = Json::array();
+    for (const CheckMetric& cm : sc.metrics) {
+        if (support.level == Support::Unsupported) {
+            cells.push_back({{"measured", nullptr}, {"pass", nullptr}, {"support", supportText(support)}});
+            continue;
+        }
+        const double measured = trace.finite ? cm.measure(scene, trace) : NAN;
+        cells.push_back({{"measured", number(measured)}, {"pass", cm.judged() ? Json(passes(measured, cm)) : Json(nullptr)},
+                         {"support", supportText(support)}});
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string hash = trace.states.empty() ? "" : hashToHex(stateHash(trace.states.back()));
+    return {{"cells", cells}, {"seconds", seconds}, {"state_hash", hash}};
+}
+
 }  // namespace
 
-Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& o) {
+Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& o, RunPool& pool) {
     std::vector<CheckScenario> scenarios = checkScenarios(o.long_set);
     if (!o.only.empty())
         std::erase_if(scenarios, [&](const CheckScenario& s) { return std::find(o.only.begin(), o.only.end(), s.id) == o.only.end(); });
@@ -61,13 +96,18 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
     doc["backends"] = backendsJson(backends);
     doc["parameters"] = {{"long", o.long_set}, {"scenarios", scenarios.size()}, {"stress", stress}};
     if (stress) doc["parameters"]["scenes_dir"] = o.scenes_dir.string();
+    // One job per (scenario, backend): run it and measure every metric of the scenario.
+    std::vector<PoolJob> jobs;
+    for (const CheckScenario& sc : scenarios)
+        for (const SelectedBackend& b : backends)
+            jobs.push_back({poolJobId("check-" + sc.id + "-" + b.info->name), [&sc, &b] { return runCheckCell(sc, b); }});
+    const std::vector<Json> cells = pool.run(jobs);
+
     Json checks = Json::array();
     Json wall = Json::object();
     int native_failures = 0;
-    std::size_t s_index = 0;
+    std::size_t job = 0;
     for (const CheckScenario& sc : scenarios) {
-        ++s_index;
-        const Scene scene = sc.build();
         std::vector<Json> rows(sc.metrics.size(), Json::object());
         for (std::size_t m = 0; m < sc.metrics.size(); ++m) {
             const CheckMetric& cm = sc.metrics[m];
@@ -77,45 +117,19 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
                        {"required_for_native", cm.required_for_native}, {"results", Json::object()}};
         }
         for (const SelectedBackend& b : backends) {
-            if (o.progress) {
-                char count[48];
-                std::snprintf(count, sizeof count, "[%zu/%zu] ", s_index, scenarios.size());
-                progressLine("check", count + sc.id + " on " + b.info->name);
-            }
-            // A scene the backend cannot represent is reported, not run; an approximated one is
-            // run and its cells say so.
-            SceneSupport support = sceneSupport(scene, b.info->capabilities);
-            RunTrace trace;
-            const auto start = std::chrono::steady_clock::now();
-            if (support.level != Support::Unsupported) {
-                RunOptions ro;
-                ro.frame_dt = sc.frame_dt;
-                ro.frames = framesFor(sc.duration, sc.frame_dt);
-                try {
-                    trace = runBackend(*b.info, scene, b.settings, ro);
-                } catch (const InputError& e) {   // refused at creation: the backend's own word
-                    support = {Support::Unsupported, e.what()};
-                }
-            }
+            const Json& r = cells[job++];
             for (std::size_t m = 0; m < sc.metrics.size(); ++m) {
                 const CheckMetric& cm = sc.metrics[m];
-                Json& cell = rows[m]["results"][b.info->name];
-                if (support.level == Support::Unsupported) {
-                    cell = {{"measured", nullptr}, {"pass", nullptr}, {"support", supportText(support)}};
-                    continue;
-                }
-                const double measured = trace.finite ? cm.measure(scene, trace) : NAN;
-                const bool ok = passes(measured, cm);
-                if (!ok && cm.judged() && cm.required_for_native && b.info->name == kNative) ++native_failures;
-                cell = {{"measured", number(measured)}, {"pass", cm.judged() ? Json(ok) : Json(nullptr)},
-                        {"support", supportText(support)}};
+                const Json& cell = r["cells"][m];
+                rows[m]["results"][b.info->name] = cell;
+                if (cell["pass"].is_boolean() && !cell["pass"].get<bool>() && cm.required_for_native && b.info->name == kNative) ++native_failures;
             }
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            wall[b.info->name] = wall.value(b.info->name, 0.0) + seconds;
+            wall[b.info->name] = wall.value(b.info->name, 0.0) + r["seconds"].get<double>();
         }
         for (Json& r : rows) checks.push_back(r);
     }
     doc["results"] = {{"checks", checks}, {"wall_time_s", wall}, {"required_failures_native", native_failures}};
+    doc["execution"] = pool.executionJson();
 
     // Table: one row per check metric, measured and pass/fail per backend.
     std::vector<std::string> columns = {"check", "closed form", "units", "expected", "tolerance", "tolerance: why", "required for native"};
@@ -155,6 +169,17 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
     chart.series.push_back({"tolerance", "lines", {0.5, checks.size() + 0.5}, {1.0, 1.0}});
     doc["charts"].push_back(chartJson(chart));
     return doc;
+}
+
+Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& o) {
+    RunPool pool = RunPool::inProcess();
+    return runCheckSuite(backends, o, pool);
+}
+
+Json checkPlan(const std::vector<SelectedBackend>& backends, const CheckOptions& o) {
+    const BuildInfo& b = buildInfo();
+    return {{"command", "check"}, {"backends", backendsJson(backends)}, {"long", o.long_set}, {"only", o.only}, {"stress", o.stress},
+            {"scenes_dir", o.scenes_dir.string()}, {"build", {{"version", b.version}, {"commit", b.commit}}}};
 }
 
 std::string checkTableText(const Json& doc) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "compare_runs.h"
+#include "vroc/core/build_info.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/state_hash.h"
 #include "vroc/core/recording/atomic_output.h"
@@ -13,6 +14,8 @@
 #include "vroc/harness/divergence.h"
 #include "vroc/harness/event_timing.h"
 #include "vroc/harness/html_report.h"
+#include "vroc/harness/mpi_world.h"
+#include "vroc/harness/run_trace_json.h"
 #include "vroc/harness/penetration.h"
 #include "vroc/harness/series_tools.h"
 #include "vroc/harness/timing_stats.h"
@@ -33,18 +36,13 @@ std::vector<int> virtualBodies(const Scene& scene) {
 }
 
 BackendRuns runAll(const Scene& scene, const SelectedBackend& b, const CompareOptions& o, double dt,
-                   std::int64_t frames, const std::string& tag) {
+                   std::int64_t frames) {
     BackendRuns r;
     RunOptions ro;
     ro.frame_dt = dt;
     ro.frames = frames;
-    if (o.progress) progressLine("compare", tag + ": main run, " + std::to_string(frames) + " frames");
     r.main = runBackend(*b.info, scene, b.settings, ro);
-    char eps[32];
-    std::snprintf(eps, sizeof eps, "%g", o.twin_epsilon);
-    if (o.progress) progressLine("compare", tag + ": twin run (positions moved by " + eps + " m)");
     {
-        if (o.progress) progressLine("compare", tag + ": rerun (determinism)");
         const RunTrace again = runBackend(*b.info, scene, b.settings, ro);
         r.state_hash = hashToHex(stateHash(r.main.states.back()));
         r.deterministic = r.state_hash == hashToHex(stateHash(again.states.back()));
@@ -195,6 +193,19 @@ Json consensusJson(const Scene& scene, const std::vector<SelectedBackend>& backe
 
 Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& requested, const CompareOptions& o,
                   const std::filesystem::path& csv_dir) {
+    RunPool pool = RunPool::inProcess();
+    return compareScene(scene, requested, o, csv_dir, pool);
+}
+
+Json comparePlan(const Scene& scene, const std::vector<SelectedBackend>& backends, const CompareOptions& o) {
+    const BuildInfo& b = buildInfo();
+    return {{"command", "compare"}, {"scene", scene.source_path}, {"scene_sha256", scene.source_sha256}, {"backends", backendsJson(backends)},
+            {"frame_dt_s", o.frame_dt ? Json(*o.frame_dt) : Json(nullptr)}, {"duration_s", o.duration}, {"windows", o.windows},
+            {"window_s", o.window}, {"twin_epsilon_m", o.twin_epsilon}, {"build", {{"version", b.version}, {"commit", b.commit}}}};
+}
+
+Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& requested, const CompareOptions& o,
+                  const std::filesystem::path& csv_dir, RunPool& pool) {
     // A backend that cannot represent the scene is left out (and named); an approximated one runs.
     Json support;
     const std::vector<SelectedBackend> backends = representableBackends(scene, requested, "compare", o.progress, support);
@@ -202,19 +213,44 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& reques
     const std::int64_t frames = framesFor(o.duration, dt);
     const std::int64_t window_frames = std::max<std::int64_t>(1, framesFor(o.window, dt));
     const std::size_t n = backends.size();
+    // Phase 1, one job per backend: main run, determinism rerun, twin run. Phase 2 (they need the
+    // reference backend's main run): every backend's re-anchored windows.
+    std::vector<PoolJob> main_jobs, window_jobs;
+    for (std::size_t i = 0; i < n; ++i)
+        main_jobs.push_back({poolJobId("main-" + backends[i].info->name), [&, i] {
+            const BackendRuns r = runAll(scene, backends[i], o, dt, frames);
+            Json pen = Json::array();
+            for (double p : r.penetration) pen.push_back(number(p));
+            return Json{{"main", runTraceJson(r.main)}, {"twin", runTraceJson(r.twin)}, {"penetration", pen},
+                        {"state_hash", r.state_hash}, {"deterministic", r.deterministic}};
+        }});
     std::vector<BackendRuns> runs(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::string tag = "scene '" + scene.name + "', backend " + backends[i].info->name + " (" +
-                                std::to_string(i + 1) + "/" + std::to_string(n) + ")";
-        runs[i] = runAll(scene, backends[i], o, dt, frames, tag);
-        if (o.write_csv && !csv_dir.empty()) writeTraceCsv(scene, runs[i].main, csv_dir / backends[i].info->name);
+    {
+        const std::vector<Json> done = pool.run(main_jobs);
+        for (std::size_t i = 0; i < n; ++i) {
+            runs[i].main = runTraceFromJson(done[i]["main"]);
+            runs[i].twin = runTraceFromJson(done[i]["twin"]);
+            for (const Json& p : done[i]["penetration"]) runs[i].penetration.push_back(p.is_null() ? NAN : p.get<double>());
+            runs[i].state_hash = done[i]["state_hash"];
+            runs[i].deterministic = done[i]["deterministic"];
+            if (o.write_csv && !csv_dir.empty() && mpi::isRoot()) writeTraceCsv(scene, runs[i].main, csv_dir / backends[i].info->name);
+        }
     }
     // Re-anchored windows: every backend restarts from the reference backend's states.
     const RunTrace& ref = runs[0].main;
     const auto anchors = anchorFrames(ref.states.size(), o.windows, window_frames);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (o.progress) progressLine("compare", backends[i].info->name + ": " + std::to_string(anchors.size()) + " re-anchored windows");
-        runWindows(scene, backends[i], ref, anchors, window_frames, dt, runs[i]);
+    for (std::size_t i = 0; i < n; ++i)
+        window_jobs.push_back({poolJobId("windows-" + backends[i].info->name), [&, i] {
+            BackendRuns r;
+            runWindows(scene, backends[i], ref, anchors, window_frames, dt, r);
+            Json ends = Json::array();
+            for (const auto& e : r.window_ends) ends.push_back(statesJson(e));
+            return Json{{"window_ends", ends}};
+        }});
+    {
+        const std::vector<Json> done = pool.run(window_jobs);
+        for (std::size_t i = 0; i < n; ++i)
+            for (const Json& e : done[i]["window_ends"]) runs[i].window_ends.push_back(statesFromJson(e));
     }
 
     Json doc = newDocument("compare", o.command_line);
@@ -297,7 +333,10 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& reques
     results["consensus"] = consensusJson(scene, backends, runs, twin_spread, dt, consensus_rows);
     doc["results"] = results;
 
-    doc["tables"].push_back(tableJson("summary", "Summary per backend",
+    const int at_once = pool.executionJson()["jobs"].get<int>() * pool.executionJson()["ranks"].get<int>();
+    doc["tables"].push_back(tableJson("summary", at_once > 1 ? "Summary per backend (step times measured with up to " +
+                                                     std::to_string(at_once) + " runs at once; --jobs 1 for timings alone on the machine)"
+                                                             : std::string("Summary per backend"),
         {"backend", "real-time factor [-]", "step p50 [µs]", "step p99 [µs]", "max penetration [mm]",
          "max |ΔE| [J]", "first contact [s]", "rest [s]", "horizon t_δ [s]", "window error [mm]", "finite", "deterministic"},
         summary));
@@ -348,13 +387,14 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& reques
     }
     doc["results"] = results;
     for (const ChartSpec* c : {&energy, &pen, &win, &hist}) doc["charts"].push_back(chartJson(*c));
+    doc["execution"] = pool.executionJson();
     return doc;
 }
 
 std::filesystem::path runCompare(const Scene& scene, const std::vector<SelectedBackend>& backends,
-                                 const CompareOptions& options, const std::filesystem::path& out_dir) {
-    recording::prepareOutputDirectory(out_dir);
-    Json doc = compareScene(scene, backends, options, out_dir);
+                                 const CompareOptions& options, const std::filesystem::path& out_dir, RunPool& pool) {
+    Json doc = compareScene(scene, backends, options, out_dir, pool);
+    if (!mpi::isRoot()) return {};
     writeDocument(doc, out_dir / "metrics.json");
     return writeReport({doc}, out_dir);
 }

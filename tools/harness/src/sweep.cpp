@@ -4,11 +4,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vroc/core/build_info.h"
 #include "vroc/core/scene_loader.h"
+#include "vroc/core/state_hash.h"
 #include "vroc/harness/divergence.h"
 #include "vroc/harness/pareto.h"
 #include "vroc/harness/robustness.h"
+#include "vroc/harness/mpi_world.h"
 #include "vroc/harness/run_trace.h"
+#include "vroc/harness/run_trace_json.h"
 #include "vroc/harness/sweep_curves.h"
 #include "vroc/harness/timing_stats.h"
 
@@ -58,6 +62,44 @@ std::string stepName(double dt) {
     return buf;
 }
 
+// A number from a result (null = not finite).
+double value(const Json& j) { return j.is_null() ? NAN : j.get<double>(); }
+
+// One (curve, step) run of phase 2: the run, its robustness against the reference and, for a
+// measured step, its cost, window error and closed-form error.
+Json measureStep(const SweepScene& in, const SelectedBackend& b, const RunTrace& ref, const WindowPlan& plan, double dt,
+                 double dt_max, double duration, bool measured) {
+    const Scene& scene = in.scene;
+    RunOptions mo;
+    mo.frame_dt = dt;
+    mo.frames = framesFor(duration, dt);
+    const RunTrace run = runBackend(*b.info, scene, b.settings, mo);
+    const RobustnessVerdict verdict = judgeRobustness(scene, run, ref);
+    const std::string hash = hashToHex(stateHash(run.states.back()));
+    if (!measured) return {{"dt_s", dt}, {"robust", verdict.ok}, {"failure", verdict.reason}, {"state_hash", hash}};
+    const TimingSummary timing = summarizeTiming(run.step_wall_s, run.simulatedTime());
+    const double err = windowError(scene, b, ref, plan, dt, dt_max);
+    const double cf = in.closed_form && run.finite ? std::abs(in.closed_form->measure(scene, run) - in.closed_form->expected) : NAN;
+    return {{"dt_s", dt}, {"cost_wall_per_sim_s", timing.wall_per_sim_s}, {"window_error_m", number(err)},
+            {"closed_form_error", number(cf)}, {"robust", verdict.ok}, {"failure", verdict.reason},
+            {"step_p50_us", timing.p50_us}, {"state_hash", hash}};
+}
+
+// One (curve, detail level) run of phase 2, at the largest step, against the full-detail reference.
+Json measureDetail(const Scene& scene, const SelectedBackend& b, const RunTrace& ref, const WindowPlan& plan, double dt_max,
+                   const SweepOptions& o, const DetailLevel& level) {
+    const Scene simple = simplifyScene(scene, level);
+    RunOptions mo;
+    mo.frame_dt = dt_max;
+    mo.frames = framesFor(o.duration, dt_max);
+    const RunTrace run = runBackend(*b.info, simple, b.settings, mo);
+    const TimingSummary timing = summarizeTiming(run.step_wall_s, run.simulatedTime());
+    const double err = windowError(simple, b, ref, plan, dt_max, dt_max);
+    return {{"level", level.name}, {"faces", virtualFaceCount(simple)}, {"cost_wall_per_sim_s", timing.wall_per_sim_s},
+            {"window_error_m", number(err)}, {"meets_target", o.target && err <= *o.target},
+            {"state_hash", hashToHex(stateHash(run.states.back()))}};
+}
+
 }  // namespace
 
 std::vector<double> defaultSweepSteps() { return {1.0 / 60, 1.0 / 120, 1.0 / 240, 1.0 / 480, 1.0 / 960}; }
@@ -70,11 +112,22 @@ SweepScene loadSweepScene(const std::string& source) {
     return {loadScene(source), std::nullopt, source};
 }
 
-Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requested, const SweepOptions& o) {
+Json sweepPlan(const SweepScene& in, const std::vector<SelectedBackend>& backends, const SweepOptions& o) {
+    Json details = Json::array();
+    for (const DetailLevel& d : o.details) details.push_back(d.name);
+    const BuildInfo& b = buildInfo();
+    return {{"command", "sweep"}, {"scene", in.source}, {"scene_sha256", in.scene.source_sha256}, {"backends", backendsJson(backends)},
+            {"dts_s", o.dts}, {"reference_dt_s", o.reference_dt ? Json(*o.reference_dt) : Json(nullptr)}, {"duration_s", o.duration},
+            {"windows", o.windows}, {"window_s", o.window}, {"vary", o.vary}, {"details", details},
+            {"target_m", o.target ? Json(*o.target) : Json(nullptr)}, {"robustness_extra", o.robustness_extra},
+            {"build", {{"version", b.version}, {"commit", b.commit}}}};
+}
+
+Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requested, const SweepOptions& o, RunPool& pool) {
     const Scene& scene = in.scene;
     // A backend that cannot represent the scene is left out (and named); an approximated one runs.
     Json support;
-    const std::vector<SelectedBackend> backends = representableBackends(scene, requested, "sweep", o.progress, support);
+    const std::vector<SelectedBackend> backends = representableBackends(scene, requested, "sweep", o.progress && mpi::isRoot(), support);
     std::vector<double> dts = o.dts.empty() ? defaultSweepSteps() : o.dts;
     std::sort(dts.begin(), dts.end(), std::greater<>());
     const double dt_max = dts.front();
@@ -92,11 +145,43 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requeste
                          {"window_s", plan.window_coarse * dt_max}, {"robustness_dts_s", robust_dts},
                          {"closed_form", in.closed_form ? Json(in.closed_form->id + ": " + in.closed_form->closed_form) : Json(nullptr)},
                          {"target_m", o.target ? Json(*o.target) : Json(nullptr)}, {"vary", o.vary}};
+    const std::vector<SweepCurve> curves = sweepCurves(backends, o.vary);
+
+    // Phase 1: one tiny-step reference run per backend (its base settings), recorded every largest step.
+    std::vector<PoolJob> ref_jobs;
+    for (std::size_t bi = 0; bi < backends.size(); ++bi)
+        ref_jobs.push_back({poolJobId("ref-" + backends[bi].info->name), [&, bi] {
+            RunOptions ro;
+            ro.frame_dt = ref_dt;
+            ro.frames = framesFor(o.duration, dt_max) * plan.ref_per_coarse;
+            ro.record_every = plan.ref_per_coarse;
+            return runTraceJson(runBackend(*backends[bi].info, scene, backends[bi].settings, ro));
+        }});
+    std::vector<RunTrace> refs;
+    for (const Json& r : pool.run(ref_jobs)) refs.push_back(runTraceFromJson(r));
+
+    // Phase 2: every (curve, step) run and every (curve, detail level) run, independent of each other.
+    std::vector<PoolJob> jobs;
+    std::vector<std::vector<std::size_t>> step_job(curves.size()), detail_job(curves.size());
+    for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+        for (double dt : robust_dts) {
+            const bool measured = std::find(dts.begin(), dts.end(), dt) != dts.end();
+            step_job[ci].push_back(jobs.size());
+            jobs.push_back({poolJobId("step-" + curves[ci].label + "-dt" + stepName(dt)), [&, ci, dt, measured] {
+                return measureStep(in, curves[ci].run, refs[curves[ci].backend], plan, dt, dt_max, o.duration, measured);
+            }});
+        }
+        for (const DetailLevel& level : o.details) {
+            detail_job[ci].push_back(jobs.size());
+            jobs.push_back({poolJobId("detail-" + curves[ci].label + "-" + level.name), [&, ci, &level = level] {
+                return measureDetail(scene, curves[ci].run, refs[curves[ci].backend], plan, dt_max, o, level);
+            }});
+        }
+    }
+    const std::vector<Json> measured = pool.run(jobs);
 
     std::vector<CostError> points;
     std::vector<std::pair<std::size_t, double>> point_owner;   // (curve, dt)
-    const std::vector<SweepCurve> curves = sweepCurves(backends, o.vary);
-    std::vector<std::optional<RunTrace>> refs(backends.size());   // per backend, base settings
     Json results = Json::object();
     std::vector<std::vector<Json>> rows, robust_rows, detail_rows;
     ChartSpec speed{"speed-accuracy", "Speed vs accuracy (self-consistency, re-anchored windows); Pareto front dashed",
@@ -107,40 +192,18 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requeste
     for (std::size_t ci = 0; ci < curves.size(); ++ci) {
         const SelectedBackend& b = curves[ci].run;
         const std::string& name = curves[ci].label;
-        if (!refs[curves[ci].backend]) {
-            if (o.progress) progressLine("sweep", b.info->name + ": reference run at dt " + stepName(ref_dt));
-            RunOptions ro;
-            ro.frame_dt = ref_dt;
-            ro.frames = framesFor(o.duration, dt_max) * plan.ref_per_coarse;
-            ro.record_every = plan.ref_per_coarse;
-            refs[curves[ci].backend] = runBackend(*b.info, scene, backends[curves[ci].backend].settings, ro);
-        }
-        const RunTrace& ref = *refs[curves[ci].backend];
         Json steps = Json::array();
         ChartSeries s_speed{name, "linespoints", {}, {}}, s_conv{name, "linespoints", {}, {}}, s_closed{name, "linespoints", {}, {}};
-        for (double dt : robust_dts) {
-            const bool measured = std::find(dts.begin(), dts.end(), dt) != dts.end();
-            if (o.progress) progressLine("sweep", name + ": dt " + stepName(dt) + (measured ? "" : " (robustness only)"));
-            RunOptions mo;
-            mo.frame_dt = dt;
-            mo.frames = framesFor(o.duration, dt);
-            const RunTrace run = runBackend(*b.info, scene, b.settings, mo);
-            const RobustnessVerdict verdict = judgeRobustness(scene, run, ref);
-            if (!measured) {
-                steps.push_back({{"dt_s", dt}, {"robust", verdict.ok}, {"failure", verdict.reason}});
-                continue;
-            }
-            const TimingSummary timing = summarizeTiming(run.step_wall_s, run.simulatedTime());
-            const double err = windowError(scene, b, ref, plan, dt, dt_max);
-            const double cf = in.closed_form && run.finite ? std::abs(in.closed_form->measure(scene, run) - in.closed_form->expected) : NAN;
-            points.push_back({timing.wall_per_sim_s, err});
-            point_owner.emplace_back(ci, dt);
-            steps.push_back({{"dt_s", dt}, {"cost_wall_per_sim_s", timing.wall_per_sim_s}, {"window_error_m", number(err)},
-                             {"closed_form_error", number(cf)}, {"robust", verdict.ok}, {"failure", verdict.reason},
-                             {"step_p50_us", timing.p50_us}});
-            s_speed.x.push_back(timing.wall_per_sim_s); s_speed.y.push_back(err);
-            s_conv.x.push_back(dt); s_conv.y.push_back(err);
-            s_closed.x.push_back(timing.wall_per_sim_s); s_closed.y.push_back(cf);
+        for (std::size_t k = 0; k < robust_dts.size(); ++k) {
+            const Json& step = measured[step_job[ci][k]];
+            steps.push_back(step);
+            if (!step.contains("cost_wall_per_sim_s")) continue;   // robustness only
+            const double cost = step["cost_wall_per_sim_s"], err = value(step["window_error_m"]), cf = value(step["closed_form_error"]);
+            points.push_back({cost, err});
+            point_owner.emplace_back(ci, robust_dts[k]);
+            s_speed.x.push_back(cost); s_speed.y.push_back(err);
+            s_conv.x.push_back(robust_dts[k]); s_conv.y.push_back(err);
+            s_closed.x.push_back(cost); s_closed.y.push_back(cf);
         }
         // The limit is the largest step from which every smaller step also passes.
         std::optional<double> robust_limit;
@@ -165,22 +228,15 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requeste
             Json levels = Json::array();
             ChartSeries s_detail{name, "linespoints", {}, {}};
             std::optional<std::pair<double, std::string>> cheapest;
-            for (const DetailLevel& level : o.details) {
-                if (o.progress) progressLine("sweep", name + ": detail " + level.name);
-                const Scene simple = simplifyScene(scene, level);
-                RunOptions mo;
-                mo.frame_dt = dt_max;
-                mo.frames = framesFor(o.duration, dt_max);
-                const RunTrace run = runBackend(*b.info, simple, b.settings, mo);
-                const TimingSummary timing = summarizeTiming(run.step_wall_s, run.simulatedTime());
-                const double err = windowError(simple, b, ref, plan, dt_max, dt_max);
-                const bool meets = o.target && err <= *o.target;
-                if (meets && (!cheapest || timing.wall_per_sim_s < cheapest->first)) cheapest = {{timing.wall_per_sim_s, level.name}};
-                levels.push_back({{"level", level.name}, {"faces", virtualFaceCount(simple)}, {"cost_wall_per_sim_s", timing.wall_per_sim_s},
-                                  {"window_error_m", number(err)}, {"meets_target", meets}});
-                detail_rows.push_back({name, level.name, virtualFaceCount(simple), timing.wall_per_sim_s, number(err),
+            for (std::size_t k = 0; k < o.details.size(); ++k) {
+                const Json& level = measured[detail_job[ci][k]];
+                const double cost = level["cost_wall_per_sim_s"], err = value(level["window_error_m"]);
+                const bool meets = level["meets_target"];
+                if (meets && (!cheapest || cost < cheapest->first)) cheapest = {{cost, o.details[k].name}};
+                levels.push_back(level);
+                detail_rows.push_back({name, o.details[k].name, level["faces"], cost, level["window_error_m"],
                                        o.target ? Json(meets ? "pass" : "FAIL") : Json(nullptr)});
-                s_detail.x.push_back(timing.wall_per_sim_s);
+                s_detail.x.push_back(cost);
                 s_detail.y.push_back(err);
             }
             results[name]["detail"] = {{"frame_dt_s", dt_max}, {"levels", levels},
@@ -224,6 +280,7 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requeste
     doc["charts"].push_back(chartJson(conv));
     if (in.closed_form) doc["charts"].push_back(chartJson(closed));
     if (!o.details.empty()) doc["charts"].push_back(chartJson(detail));
+    doc["execution"] = pool.executionJson();
     return doc;
 }
 

@@ -10,6 +10,7 @@
 
 #include "vroc/harness/backend_selection.h"
 #include "vroc/harness/metrics_document.h"
+#include "vroc/harness/run_pool.h"
 
 namespace vroc::harness {
 
@@ -24,9 +25,16 @@ struct CheckOptions {
     std::filesystem::path scenes_dir = "scenes/stress";   ///< where the stress scenes are
 };
 
-/// Runs the suite; the document's results.checks lists every metric with per-backend
-/// {measured, pass} and results.required_failures_native counts the failures that set exit 1.
+/// Runs the suite, one pool job per (scenario, backend); the document's results.checks lists every
+/// metric with per-backend {measured, pass} and results.required_failures_native counts the
+/// failures that set exit 1.
+Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& options, RunPool& pool);
+
+/// The same, one run after another in this process, writing nothing.
 Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& options);
+
+/// What the suite's runs depend on, for RunPool (--resume).
+Json checkPlan(const std::vector<SelectedBackend>& backends, const CheckOptions& options);
 
 /// The plain-text table printed on stdout.
 std::string checkTableText(const Json& doc);

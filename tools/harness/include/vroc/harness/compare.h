@@ -11,6 +11,7 @@
 #include "vroc/core/scene.h"
 #include "vroc/harness/backend_selection.h"
 #include "vroc/harness/metrics_document.h"
+#include "vroc/harness/run_pool.h"
 
 namespace vroc::harness {
 
@@ -26,12 +27,21 @@ struct CompareOptions {
     std::string command_line;
 };
 
-/// Runs everything and returns the metrics document (no files written).
+/// Runs everything over `pool` (per backend: main, rerun and twin; then the re-anchored windows)
+/// and returns the metrics document; writes only the CSV files (rank 0, when csv_dir is set).
+Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& backends, const CompareOptions& options,
+                  const std::filesystem::path& csv_dir, RunPool& pool);
+
+/// The same, one run after another in this process.
 Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& backends, const CompareOptions& options,
                   const std::filesystem::path& csv_dir);
 
-/// compareScene + metrics.json + report.html in `out_dir`. Returns the report path.
+/// What the comparison's runs depend on, for RunPool (--resume).
+Json comparePlan(const Scene& scene, const std::vector<SelectedBackend>& backends, const CompareOptions& options);
+
+/// compareScene + metrics.json + report.html in `out_dir` (rank 0). Returns the report path
+/// (empty on other ranks). The caller prepares `out_dir`.
 std::filesystem::path runCompare(const Scene& scene, const std::vector<SelectedBackend>& backends,
-                                 const CompareOptions& options, const std::filesystem::path& out_dir);
+                                 const CompareOptions& options, const std::filesystem::path& out_dir, RunPool& pool);
 
 }  // namespace vroc::harness

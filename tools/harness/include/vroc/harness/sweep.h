@@ -14,6 +14,7 @@
 #include "vroc/harness/check_suite.h"
 #include "vroc/harness/detail_levels.h"
 #include "vroc/harness/metrics_document.h"
+#include "vroc/harness/run_pool.h"
 
 namespace vroc::harness {
 
@@ -44,7 +45,12 @@ SweepScene loadSweepScene(const std::string& source);
 /// The default steps: 1/60, 1/120, ..., 1/960 s.
 std::vector<double> defaultSweepSteps();
 
-/// Runs the sweep and returns the metrics document (no files written).
-Json runSweep(const SweepScene& scene, const std::vector<SelectedBackend>& backends, const SweepOptions& options);
+/// What a sweep's runs depend on (scene, backends, options, build): the plan RunPool hashes so that
+/// --resume reuses only runs of the same sweep.
+Json sweepPlan(const SweepScene& scene, const std::vector<SelectedBackend>& backends, const SweepOptions& options);
+
+/// Runs the sweep over `pool` (reference runs first, then every step and detail run) and returns
+/// the metrics document; only the pool writes files (its finished runs).
+Json runSweep(const SweepScene& scene, const std::vector<SelectedBackend>& backends, const SweepOptions& options, RunPool& pool);
 
 }  // namespace vroc::harness

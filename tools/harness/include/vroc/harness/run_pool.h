@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+// Independent runs spread over local worker processes and MPI ranks, with results identical to
+// running them one after another (docs/harness.md, "Many runs at once").
+//
+// A command lists its runs as jobs (an id and a function returning the run's result as JSON) and
+// hands them to RunPool::run, which returns the results in job order. How they ran does not show:
+// - `--jobs 1`, one rank: in this process, one after another;
+// - `--jobs N`: N forked worker processes at a time (a crash costs one run, not the command);
+// - under `mpirun -n R`: rank 0 hands jobs out one at a time to every rank, runs `--jobs` of its own
+//   in forked workers, gathers each result and broadcasts them all back, so that every rank goes on
+//   with the same results (a later phase may depend on an earlier one's, as a sweep's runs depend
+//   on its reference runs).
+// Every result passes through its JSON text (whose doubles round-trip exactly), so the results, and
+// the metrics made from them, are the same bits whichever way they ran.
+//
+// Each finished run is written at once to `<runs_dir>/<id>.json`, marked with the hash of the plan
+// (what the runs depend on). `--resume` loads those whose plan matches and runs only the rest. An
+// interrupt (Ctrl-C, a killed rank, a cancelled job) stops the workers, prints which runs did not
+// finish and how to resume, and leaves `<runs_dir>/status.json` listing them.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "vroc/harness/metrics_document.h"
+
+namespace vroc::harness {
+
+struct PoolJob {
+    std::string id;                 ///< unique in the command, file-name safe (poolJobId)
+    std::function<Json()> run;      ///< the run; throws for a failure (counted, named, not fatal to others)
+};
+
+struct PoolProgress {
+    int total = 0;             ///< runs in this phase
+    int done = 0;              ///< finished (resumed ones included)
+    int failed = 0;
+    double seconds_left = -1;  ///< estimate; < 0 while unknown
+};
+
+struct PoolOptions {
+    int jobs = 0;                          ///< local runs at once; 0: every core (one per rank under MPI)
+    std::filesystem::path runs_dir;        ///< where each finished run is written (created); empty: nowhere, and
+                                           ///< the runs go one after another in this process
+    bool resume = false;                   ///< load finished runs of the same plan instead of rerunning them
+    Json plan;                             ///< everything the runs depend on; hashed into each run file
+    std::string command = "vroc";          ///< for messages, e.g. "vroc sweep"
+    std::function<void(const PoolProgress&)> progress;   ///< called on rank 0 as runs finish; may be empty
+};
+
+/// "ref-native-dt=1/960" -> "ref-native-dt_1_960": letters, digits and . _ = - kept.
+std::string poolJobId(const std::string& text);
+
+/// The default for `--jobs`: the number of cores this process may use.
+int defaultJobs();
+
+class RunPool {
+public:
+    /// Throws InputError if `runs_dir` cannot be created, or (with resume) holds runs of another plan.
+    explicit RunPool(PoolOptions options);
+
+    /// Every job here, one after another, writing nothing (library callers and tests).
+    static RunPool inProcess();
+
+    /// Runs the jobs (collective: every MPI rank calls it with the same list) and returns their
+    /// results in job order on every rank. Throws RunError naming the failed runs once all others
+    /// have finished; the finished ones stay on disk for --resume.
+    std::vector<Json> run(const std::vector<PoolJob>& jobs);
+
+    /// {jobs, ranks, mpi, runs, resumed} for metrics.json: how the runs were executed.
+    Json executionJson() const;
+
+private:
+    PoolOptions options_;
+    std::string plan_hash_;
+    int runs_ = 0;      ///< over every phase
+    int resumed_ = 0;
+};
+
+}  // namespace vroc::harness

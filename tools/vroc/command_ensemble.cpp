@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// `vroc ensemble SCENE --backends a,b --members N --perturb positions=1e-6`: the comparison that
+// survives chaos (docs/harness.md, "Ensembles").
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "command.h"
+#include "run_pool_options.h"
+#include "vroc/core/errors.h"
+#include "vroc/core/scene_loader.h"
+#include "vroc/harness/ensemble.h"
+#include "vroc/harness/html_report.h"
+#include "vroc/harness/mpi_world.h"
+#include "vroc/harness/output_dir.h"
+
+namespace vroc::cli {
+namespace {
+
+struct EnsembleArgs {
+    std::string scene;
+    std::string backends;
+    std::string out_dir;
+    std::string perturb;
+    std::string dt;
+    std::vector<std::string> assignments;
+    harness::EnsembleOptions options;
+    PoolArgs pool;
+    bool quiet = false;
+};
+
+double parseStep(const std::string& word) {
+    char* end = nullptr;
+    double v = 0;
+    if (word.rfind("1/", 0) == 0) {
+        const double d = std::strtod(word.c_str() + 2, &end);
+        v = d > 0 ? 1 / d : 0;
+    } else {
+        v = std::strtod(word.c_str(), &end);
+    }
+    if (word.empty() || *end != '\0' || !(v > 0)) throw InputError("--dt: '" + word + "': expected a step in seconds (0.004 or 1/240)");
+    return v;
+}
+
+int ensemble(EnsembleArgs& a, const Context& context) {
+    const auto backends = harness::selectBackends(a.backends, a.assignments);
+    if (!a.perturb.empty()) a.options.perturb = harness::parsePerturbation(a.perturb);
+    if (!a.dt.empty()) a.options.frame_dt = parseStep(a.dt);
+    if (a.options.permutations < 99) throw InputError("--permutations: expected at least 99");
+    if (!(a.options.alpha > 0 && a.options.alpha < 1)) throw InputError("--alpha: expected a level in (0, 1)");
+    a.options.source = a.scene;
+    a.options.command_line = context.command_line;
+    const Scene scene = loadScene(a.scene);
+    const auto out = a.out_dir.empty() ? harness::defaultOutputDir("ensemble", scene.name) : std::filesystem::path(a.out_dir);
+    prepareRunsOutput(out, a.pool, !a.out_dir.empty());
+    std::shared_ptr<ProgressBar> bar;
+    harness::RunPool pool = makeRunPool(a.pool, out, harness::ensemblePlan(scene, backends, a.options), "ensemble",
+                                        !a.quiet && context.stderr_is_terminal, bar);
+    const harness::Json doc = harness::runEnsemble(scene, backends, a.options, pool);
+    bar->finish();
+    if (!harness::mpi::isRoot()) return 0;   // rank 0 writes the report
+    harness::writeDocument(doc, out / "metrics.json");
+    const auto report = harness::writeReport({doc}, out);
+    std::fputs(harness::ensembleVerdictText(doc).c_str(), stdout);
+    std::printf("vroc ensemble: report %s\n", std::filesystem::absolute(report).lexically_normal().string().c_str());
+    return 0;
+}
+
+Action setup(CLI::App& sub, const Context& context) {
+    auto a = std::make_shared<EnsembleArgs>();
+    sub.add_option("scene", a->scene, "Scene file")->required();
+    sub.add_option("--backends", a->backends, "Backends, comma-separated, at least two (default: all)");
+    sub.add_option("--out,-o", a->out_dir, "Output directory (default runs/ensemble-<scene>-<time>/)");
+    sub.add_option("--members,-n", a->options.members, "Perturbed runs per backend (default 32)");
+    sub.add_option("--perturb", a->perturb,
+                   "Standard deviations of the initial-state noise: positions=M,velocities=M/S,orientations=RAD,angular=RAD/S "
+                   "(default positions=1e-6)");
+    sub.add_option("--duration", a->options.duration, "Simulated time of each member [s] (default 4)");
+    sub.add_option("--dt", a->dt, "Frame step [s] (default 1/60)");
+    sub.add_option("--seed", a->options.seed, "Seed of the perturbations and permutations (default 1)");
+    sub.add_option("--permutations", a->options.permutations, "Permutations per test (default 999)");
+    sub.add_option("--alpha", a->options.alpha, "Family-wise significance level, Holm-adjusted (default 0.05)");
+    sub.add_option("--set", a->assignments, "Backend setting key=value (key starts with the backend name), repeatable")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    sub.add_flag("--quiet,-q", a->quiet, "No progress bar");
+    addPoolOptions(sub, a->pool);
+    sub.footer("Prints, per backend pair, the observables that distinguish them; writes metrics.json, report.html\n"
+               "and each finished member to runs/. Runs in parallel (--jobs) and over MPI ranks (mpirun -n R vroc ensemble ...).");
+    return [a, context] { return ensemble(*a, context); };
+}
+
+}  // namespace
+
+Command makeEnsembleCommand() {
+    return {"ensemble", "Perturbed ensembles per backend; which observables distinguish the backends (survives chaos)", &setup};
+}
+
+}  // namespace vroc::cli
