@@ -7,7 +7,7 @@ PACKAGES := cmake ninja-build g++ make pkg-config git ca-certificates \
   libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test test-long bench bench-dense clean
+.PHONY: all deps configure build demo test test-long bench bench-dense bench-scale clean
 
 all: build
 
@@ -44,6 +44,10 @@ bench-dense: build
 	python3 scripts/dense_contact_bench.py --build $(BUILD_DIR) --duration 4 --repeats 3 --out runs/dense-contact \
 	  --scenes plank stack20_ratio10 pyramid10 pyramid20 pyramid30 simbenchmark666 bin_spheres100 bin_boxes100 bin_hulls100 bin_spheres400
 	python3 scripts/dense_contact_bench.py --build $(BUILD_DIR) --scaling --duration 2 --repeats 1 --out runs/dense-contact-scaling
+
+# Scale-out (issue 11): one sweep over worker processes and MPI ranks; results checked identical.
+bench-scale: build
+	python3 scripts/scale_out_bench.py --build $(BUILD_DIR) --repeats 3 --out runs/scale-out
 
 clean:
 	rm -rf $(BUILD_DIR)

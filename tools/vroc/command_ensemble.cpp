@@ -49,7 +49,8 @@ int ensemble(EnsembleArgs& a, const Context& context) {
     const auto backends = harness::selectBackends(a.backends, a.assignments);
     if (!a.perturb.empty()) a.options.perturb = harness::parsePerturbation(a.perturb);
     if (!a.dt.empty()) a.options.frame_dt = parseStep(a.dt);
-    if (a.options.permutations < 99) throw InputError("--permutations: expected at least 99");
+    if (a.options.permutations != 0 && a.options.permutations < 99)
+        throw InputError("--permutations: expected at least 99 (or 0: enough for the number of tests)");
     if (!(a.options.alpha > 0 && a.options.alpha < 1)) throw InputError("--alpha: expected a level in (0, 1)");
     a.options.source = a.scene;
     a.options.command_line = context.command_line;
@@ -81,7 +82,7 @@ Action setup(CLI::App& sub, const Context& context) {
     sub.add_option("--duration", a->options.duration, "Simulated time of each member [s] (default 4)");
     sub.add_option("--dt", a->dt, "Frame step [s] (default 1/60)");
     sub.add_option("--seed", a->options.seed, "Seed of the perturbations and permutations (default 1)");
-    sub.add_option("--permutations", a->options.permutations, "Permutations per test (default 999)");
+    sub.add_option("--permutations", a->options.permutations, "Permutations per test (default 0: max(999, 2 x tests / alpha), so each test can pass Holm's correction)");
     sub.add_option("--alpha", a->options.alpha, "Family-wise significance level, Holm-adjusted (default 0.05)");
     sub.add_option("--set", a->assignments, "Backend setting key=value (key starts with the backend name), repeatable")
         ->expected(1)

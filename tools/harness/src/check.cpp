@@ -100,7 +100,8 @@ Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOpti
     std::vector<PoolJob> jobs;
     for (const CheckScenario& sc : scenarios)
         for (const SelectedBackend& b : backends)
-            jobs.push_back({poolJobId("check-" + sc.id + "-" + b.info->name), [&sc, &b] { return runCheckCell(sc, b); }});
+            jobs.push_back({poolJobId("check-" + sc.id + "-" + b.info->name), [&sc, &b] { return runCheckCell(sc, b); },
+                            static_cast<double>(framesFor(sc.duration, sc.frame_dt))});
     const std::vector<Json> cells = pool.run(jobs);
 
     Json checks = Json::array();

@@ -215,43 +215,43 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& reques
     const std::size_t n = backends.size();
     // Phase 1, one job per backend: main run, determinism rerun, twin run. Phase 2 (they need the
     // reference backend's main run): every backend's re-anchored windows.
-    std::vector<PoolJob> main_jobs, window_jobs;
+    // Per backend: main run, determinism rerun and twin run; then its re-anchored windows, which
+    // restart from the reference backend's (the first's) main run, so they wait for that run.
+    std::vector<PoolJob> jobs;
     for (std::size_t i = 0; i < n; ++i)
-        main_jobs.push_back({poolJobId("main-" + backends[i].info->name), [&, i] {
+        jobs.push_back({poolJobId("main-" + backends[i].info->name), [&, i] {
             const BackendRuns r = runAll(scene, backends[i], o, dt, frames);
             Json pen = Json::array();
             for (double p : r.penetration) pen.push_back(number(p));
             return Json{{"main", runTraceJson(r.main)}, {"twin", runTraceJson(r.twin)}, {"penetration", pen},
                         {"state_hash", r.state_hash}, {"deterministic", r.deterministic}};
-        }});
-    std::vector<BackendRuns> runs(n);
-    {
-        const std::vector<Json> done = pool.run(main_jobs);
-        for (std::size_t i = 0; i < n; ++i) {
-            runs[i].main = runTraceFromJson(done[i]["main"]);
-            runs[i].twin = runTraceFromJson(done[i]["twin"]);
-            for (const Json& p : done[i]["penetration"]) runs[i].penetration.push_back(p.is_null() ? NAN : p.get<double>());
-            runs[i].state_hash = done[i]["state_hash"];
-            runs[i].deterministic = done[i]["deterministic"];
-            if (o.write_csv && !csv_dir.empty() && mpi::isRoot()) writeTraceCsv(scene, runs[i].main, csv_dir / backends[i].info->name);
-        }
-    }
-    // Re-anchored windows: every backend restarts from the reference backend's states.
-    const RunTrace& ref = runs[0].main;
-    const auto anchors = anchorFrames(ref.states.size(), o.windows, window_frames);
+        }, 3.0 * static_cast<double>(frames)});
+    RunTrace ref;             // the reference backend's main run, once it is done (DependencyHook)
+    std::vector<std::size_t> anchors;
     for (std::size_t i = 0; i < n; ++i)
-        window_jobs.push_back({poolJobId("windows-" + backends[i].info->name), [&, i] {
+        jobs.push_back({poolJobId("windows-" + backends[i].info->name), [&, i] {
             BackendRuns r;
             runWindows(scene, backends[i], ref, anchors, window_frames, dt, r);
             Json ends = Json::array();
             for (const auto& e : r.window_ends) ends.push_back(statesJson(e));
             return Json{{"window_ends", ends}};
-        }});
-    {
-        const std::vector<Json> done = pool.run(window_jobs);
-        for (std::size_t i = 0; i < n; ++i)
-            for (const Json& e : done[i]["window_ends"]) runs[i].window_ends.push_back(statesFromJson(e));
+        }, static_cast<double>(o.windows * window_frames), {0}});
+    const std::vector<Json> done = pool.run(jobs, [&](std::size_t, const Json& r) {
+        ref = runTraceFromJson(r["main"]);
+        anchors = anchorFrames(ref.states.size(), o.windows, window_frames);
+    });
+    std::vector<BackendRuns> runs(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        runs[i].main = runTraceFromJson(done[i]["main"]);
+        runs[i].twin = runTraceFromJson(done[i]["twin"]);
+        for (const Json& p : done[i]["penetration"]) runs[i].penetration.push_back(p.is_null() ? NAN : p.get<double>());
+        runs[i].state_hash = done[i]["state_hash"];
+        runs[i].deterministic = done[i]["deterministic"];
+        for (const Json& e : done[n + i]["window_ends"]) runs[i].window_ends.push_back(statesFromJson(e));
+        if (o.write_csv && !csv_dir.empty() && mpi::isRoot()) writeTraceCsv(scene, runs[i].main, csv_dir / backends[i].info->name);
     }
+    ref = runs[0].main;   // on every rank, whichever ran what
+    anchors = anchorFrames(ref.states.size(), o.windows, window_frames);
 
     Json doc = newDocument("compare", o.command_line);
     doc["title"] = "scene '" + scene.name + "' on " + std::to_string(n) + " backend(s)";

@@ -232,10 +232,15 @@ Json runEnsemble(const Scene& scene, const std::vector<SelectedBackend>& request
     doc["parameters"] = {{"members", o.members}, {"duration_s", o.duration}, {"frame_dt_s", o.frame_dt}, {"seed", o.seed},
                          {"perturb", {{"positions_m", o.perturb.position}, {"velocities_m_per_s", o.perturb.velocity},
                                       {"orientations_rad", o.perturb.orientation}, {"angular_rad_per_s", o.perturb.angular_velocity}}},
-                         {"permutations", o.permutations}, {"alpha", o.alpha}, {"statistic", "energy distance, permutation test, Holm-adjusted"}};
+                         {"alpha", o.alpha}, {"statistic", "energy distance, permutation test, Holm-adjusted"}};
 
-    // Tests: every observable, every backend pair.
+    // Tests: every observable, every backend pair. Enough permutations that the smallest possible
+    // p-value, 1 / (permutations + 1), can pass Holm's first threshold alpha / tests twice over:
+    // with too few, no observable could ever distinguish the backends.
     const std::vector<Observable> obs = observables(scene);
+    const std::size_t family = obs.size() * backends.size() * (backends.size() - 1) / 2;
+    const int permutations = o.permutations > 0 ? o.permutations
+                                                : std::max(999, static_cast<int>(std::ceil(2.0 * double(family) / o.alpha)));
     struct Test { std::string observable, a, b; PermutationTest t; double w1 = NAN; std::size_t na = 0, nb = 0; };
     std::vector<Test> tests;
     std::uint64_t test_seed = o.seed;
@@ -247,7 +252,7 @@ Json runEnsemble(const Scene& scene, const std::vector<SelectedBackend>& request
                 const std::vector<Sample> x = samples(members[a], ob.id), y = samples(members[b], ob.id);
                 ++test_seed;
                 if (x.size() < 2 || y.size() < 2) continue;
-                Test t{ob.id, a, b, energyPermutationTest(x, y, o.permutations, test_seed), NAN, x.size(), y.size()};
+                Test t{ob.id, a, b, energyPermutationTest(x, y, permutations, test_seed), NAN, x.size(), y.size()};
                 if (x.front().size() == 1) {
                     std::vector<double> xs, ys;
                     for (const Sample& s : x) xs.push_back(s[0]);
@@ -256,6 +261,8 @@ Json runEnsemble(const Scene& scene, const std::vector<SelectedBackend>& request
                 }
                 tests.push_back(t);
             }
+    doc["parameters"]["permutations"] = permutations;
+    doc["parameters"]["tests"] = tests.size();
     std::vector<double> p;
     for (const Test& t : tests) p.push_back(t.t.p_value);
     const std::vector<double> p_holm = holmAdjusted(p);

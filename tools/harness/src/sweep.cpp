@@ -147,38 +147,36 @@ Json runSweep(const SweepScene& in, const std::vector<SelectedBackend>& requeste
                          {"target_m", o.target ? Json(*o.target) : Json(nullptr)}, {"vary", o.vary}};
     const std::vector<SweepCurve> curves = sweepCurves(backends, o.vary);
 
-    // Phase 1: one tiny-step reference run per backend (its base settings), recorded every largest step.
-    std::vector<PoolJob> ref_jobs;
+    // One tiny-step reference run per backend (its base settings), recorded every largest step;
+    // then every (curve, step) and (curve, detail level) run, each after its backend's reference.
+    std::vector<PoolJob> jobs;
     for (std::size_t bi = 0; bi < backends.size(); ++bi)
-        ref_jobs.push_back({poolJobId("ref-" + backends[bi].info->name), [&, bi] {
+        jobs.push_back({poolJobId("ref-" + backends[bi].info->name), [&, bi] {
             RunOptions ro;
             ro.frame_dt = ref_dt;
             ro.frames = framesFor(o.duration, dt_max) * plan.ref_per_coarse;
             ro.record_every = plan.ref_per_coarse;
             return runTraceJson(runBackend(*backends[bi].info, scene, backends[bi].settings, ro));
-        }});
-    std::vector<RunTrace> refs;
-    for (const Json& r : pool.run(ref_jobs)) refs.push_back(runTraceFromJson(r));
-
-    // Phase 2: every (curve, step) run and every (curve, detail level) run, independent of each other.
-    std::vector<PoolJob> jobs;
+        }, static_cast<double>(framesFor(o.duration, dt_max) * plan.ref_per_coarse)});
+    std::vector<RunTrace> refs(backends.size());   // filled as each reference finishes (DependencyHook)
     std::vector<std::vector<std::size_t>> step_job(curves.size()), detail_job(curves.size());
     for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+        const std::vector<std::size_t> after = {curves[ci].backend};
         for (double dt : robust_dts) {
             const bool measured = std::find(dts.begin(), dts.end(), dt) != dts.end();
             step_job[ci].push_back(jobs.size());
             jobs.push_back({poolJobId("step-" + curves[ci].label + "-dt" + stepName(dt)), [&, ci, dt, measured] {
                 return measureStep(in, curves[ci].run, refs[curves[ci].backend], plan, dt, dt_max, o.duration, measured);
-            }});
+            }, static_cast<double>(framesFor(o.duration, dt)) * (measured ? 2 : 1), after});   // the windows cover about one more run
         }
         for (const DetailLevel& level : o.details) {
             detail_job[ci].push_back(jobs.size());
             jobs.push_back({poolJobId("detail-" + curves[ci].label + "-" + level.name), [&, ci, &level = level] {
                 return measureDetail(scene, curves[ci].run, refs[curves[ci].backend], plan, dt_max, o, level);
-            }});
+            }, 2.0 * static_cast<double>(framesFor(o.duration, dt_max)), after});
         }
     }
-    const std::vector<Json> measured = pool.run(jobs);
+    const std::vector<Json> measured = pool.run(jobs, [&refs](std::size_t i, const Json& r) { refs[i] = runTraceFromJson(r); });
 
     std::vector<CostError> points;
     std::vector<std::pair<std::size_t, double>> point_owner;   // (curve, dt)

@@ -31,7 +31,18 @@ namespace vroc::harness {
 struct PoolJob {
     std::string id;                 ///< unique in the command, file-name safe (poolJobId)
     std::function<Json()> run;      ///< the run; throws for a failure (counted, named, not fatal to others)
+    /// Relative cost estimate (e.g. frames to step). Costlier jobs are handed out first so that a
+    /// long run does not start last and leave the other workers idle; results keep job order.
+    double cost = 0;
+    /// Indices (in the same run() call) of jobs whose results this one reads: it starts only after
+    /// they finished, and fails, named, if one of them failed.
+    std::vector<std::size_t> after = {};
 };
+
+/// Called with (job index, result) for every job another job depends on, in each process that
+/// runs a dependent job and before that job starts: the caller stores what its dependents read
+/// (a sweep's reference trace). On rank 0 it is called for every such job as it finishes.
+using DependencyHook = std::function<void(std::size_t, const Json&)>;
 
 struct PoolProgress {
     int total = 0;             ///< runs in this phase
@@ -64,12 +75,14 @@ public:
     /// Every job here, one after another, writing nothing (library callers and tests).
     static RunPool inProcess();
 
-    /// Runs the jobs (collective: every MPI rank calls it with the same list) and returns their
-    /// results in job order on every rank. Throws RunError naming the failed runs once all others
+    /// Runs the jobs (collective: every MPI rank calls it with the same list), each as soon as its
+    /// dependencies are done, costliest first, and returns their results in job order on every rank. Throws RunError naming the failed runs once all others
     /// have finished; the finished ones stay on disk for --resume.
-    std::vector<Json> run(const std::vector<PoolJob>& jobs);
+    std::vector<Json> run(const std::vector<PoolJob>& jobs, const DependencyHook& on_dependency = {});
 
-    /// {jobs, ranks, mpi, runs, resumed} for metrics.json: how the runs were executed.
+    /// {jobs, ranks, mpi_library, runs, resumed, dispatch_s} for metrics.json: how the runs were
+    /// executed; dispatch_s [s] is the CPU time rank 0's dispatcher spent handing runs out, storing
+    /// their results and polling (0 when the runs went in this process).
     Json executionJson() const;
 
 private:
@@ -77,6 +90,7 @@ private:
     std::string plan_hash_;
     int runs_ = 0;      ///< over every phase
     int resumed_ = 0;
+    double dispatch_s_ = 0;
 };
 
 }  // namespace vroc::harness
