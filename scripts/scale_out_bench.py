@@ -156,7 +156,8 @@ def main():
         if tiny:
             f.write(f"\nDispatch: {tiny['runs']} near-empty runs take {tiny['wall_2_ranks_s']:.3f} s on 2 ranks "
                     f"({tiny['wall_1_rank_s']:.3f} s on 1); mpirun's own launch of 2 ranks takes {tiny['mpirun_launch_s']:.3f} s; "
-                    f"so one run costs about {tiny['per_run_dispatch_ms']:.2f} ms of hand-out, result file and gather.\n")
+                    f"so a near-empty run costs about {tiny['per_run_dispatch_ms']:.2f} ms all included (creating the backend, the run, "
+                    f"hand-out, result file, gather); the dispatcher's own CPU time is the `rank 0 dispatch` column.\n")
     if tiny:
         with open(os.path.join(a.out, "dispatch.json"), "w") as f:
             json.dump(tiny, f, indent=2)
