@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "frame_steps.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
@@ -32,26 +33,17 @@ struct EnsembleArgs {
     bool quiet = false;
 };
 
-double parseStep(const std::string& word) {
-    char* end = nullptr;
-    double v = 0;
-    if (word.rfind("1/", 0) == 0) {
-        const double d = std::strtod(word.c_str() + 2, &end);
-        v = d > 0 ? 1 / d : 0;
-    } else {
-        v = std::strtod(word.c_str(), &end);
-    }
-    if (word.empty() || *end != '\0' || !(v > 0)) throw InputError("--dt: '" + word + "': expected a step in seconds (0.004 or 1/240)");
-    return v;
-}
-
 int ensemble(EnsembleArgs& a, const Context& context) {
     const auto backends = harness::selectBackends(a.backends, a.assignments);
     if (!a.perturb.empty()) a.options.perturb = harness::parsePerturbation(a.perturb);
-    if (!a.dt.empty()) a.options.frame_dt = parseStep(a.dt);
+    if (!a.dt.empty()) a.options.frame_dt = parseFrameStep(a.dt);
     if (a.options.permutations != 0 && a.options.permutations < 99)
         throw InputError("--permutations: expected at least 99 (or 0: enough for the number of tests)");
     if (!(a.options.alpha > 0 && a.options.alpha < 1)) throw InputError("--alpha: expected a level in (0, 1)");
+    // Checked before any folder is made, so bad input leaves nothing behind.
+    if (a.options.members < 2) throw InputError("--members: expected at least 2 members per backend");
+    if (!(a.options.duration > 0)) throw InputError("--duration: expected a positive number of seconds");
+    if (backends.size() < 2) throw InputError("vroc ensemble compares backends: give at least two with --backends");
     a.options.source = a.scene;
     a.options.command_line = context.command_line;
     const Scene scene = loadScene(a.scene);

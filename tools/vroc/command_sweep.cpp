@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "frame_steps.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/atomic_output.h"
@@ -35,30 +36,9 @@ struct SweepArgs {
     bool quiet = false;
 };
 
-// "1/60,1/120,0.002" -> seconds.
-std::vector<double> parseSteps(const std::string& list) {
-    std::vector<double> out;
-    std::string word;
-    for (char c : list + ",") {
-        if (c != ',') { word += c; continue; }
-        char* end = nullptr;
-        double v = 0;
-        if (word.rfind("1/", 0) == 0) {
-            const double d = std::strtod(word.c_str() + 2, &end);
-            v = d > 0 ? 1 / d : 0;
-        } else {
-            v = std::strtod(word.c_str(), &end);
-        }
-        if (word.empty() || *end != '\0' || !(v > 0)) throw InputError("--dt: '" + word + "': expected a step in seconds (0.004 or 1/240)");
-        out.push_back(v);
-        word.clear();
-    }
-    return out;
-}
-
 int sweep(SweepArgs& a, const Context& context) {
     const auto backends = harness::selectBackends(a.backends, a.assignments);
-    if (!a.dts.empty()) a.options.dts = parseSteps(a.dts);
+    if (!a.dts.empty()) a.options.dts = parseFrameSteps(a.dts);
     if (!a.details.empty()) a.options.details = harness::parseDetailLevels(a.details);
     if (a.target && !(*a.target > 0)) throw InputError("--target: expected a positive error in metres");
     if (!(a.options.duration > 0)) throw InputError("--duration: expected a positive number of seconds");

@@ -33,6 +33,7 @@ namespace {
 constexpr const char* kRunFormat = "vroc-run-result/1";
 constexpr int kMaxLocalWorkers = 256;
 constexpr auto kPoll = std::chrono::microseconds(500);
+constexpr int kExitInterrupted = 3;   // docs/cli.md: 3 = failure while running, interruption included
 
 // MPI message tags of the hand-out protocol (rank 0 <-> worker ranks).
 constexpr int kTagReady = 11;      // worker -> 0: idle, send me a job
@@ -56,8 +57,8 @@ struct StatusText {
 std::array<StatusText, 2> g_status{};
 volatile sig_atomic_t g_handling = 0;
 
-void onInterrupt(int sig) {
-    if (g_handling) _exit(128 + sig);
+void onInterrupt(int) {
+    if (g_handling) _exit(kExitInterrupted);
     g_handling = 1;
     for (auto& c : g_children) {
         const pid_t pid = c.load();
@@ -75,7 +76,7 @@ void onInterrupt(int sig) {
             close(fd);
         }
     }
-    _exit(128 + sig);
+    _exit(kExitInterrupted);
 }
 
 void publishMessage(const std::string& text, const std::filesystem::path& status_path, const std::string& status_text) {
@@ -572,7 +573,9 @@ private:
             f.commit();
             last_status_write_ = now;
         }
-        publishMessage("\n" + o_.command + ": interrupted: " + std::to_string(done_) + " of " + std::to_string(total_) +
+        // One line in the CLI's error form; after a progress bar, on a line of its own.
+        const std::string command = o_.command.rfind("vroc ", 0) == 0 ? o_.command.substr(5) : o_.command;
+        publishMessage(std::string(isatty(STDERR_FILENO) ? "\n" : "") + "vroc: error: " + command + " interrupted: " + std::to_string(done_) + " of " + std::to_string(total_) +
                        " runs finished, " + std::to_string(n_missing) + " did not: " + names + ". The finished runs are kept in " +
                        o_.runs_dir.string() + " (status.json lists the rest); rerun the same command with --resume to finish only what is missing.\n",
                        o_.runs_dir / "status.json", status_text);
