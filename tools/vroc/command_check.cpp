@@ -101,7 +101,7 @@ Action setup(CLI::App& sub, const Context& context) {
     sub.add_option("--set", a->assignments, "Backend setting key=value (key starts with the backend name), repeatable")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-    sub.add_flag("--quiet,-q", a->quiet, "No progress lines");
+    sub.add_flag("--quiet,-q", a->quiet, "No progress bar (it is drawn only on a terminal anyway)");
     addPoolOptions(sub, a->pool);
     sub.footer("Prints the check x backend table; writes metrics.json and report.html.\n"
                "Stress rows are targets (not required for native); rows marked info are reported, not judged.\n"

@@ -63,7 +63,7 @@ Action setup(CLI::App& sub, const Context& context) {
     sub.add_option("--set", a->assignments, "Backend setting key=value (key starts with the backend name), repeatable")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-    sub.add_flag("--quiet,-q", a->quiet, "No progress lines");
+    sub.add_flag("--quiet,-q", a->quiet, "No progress bar (it is drawn only on a terminal anyway)");
     addPoolOptions(sub, a->pool);
     sub.footer("Writes metrics.json, <backend>/{trajectory,events,step_times}.csv and report.html.");
     return [a, context] { return compare(*a, context); };

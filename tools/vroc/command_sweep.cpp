@@ -83,7 +83,7 @@ Action setup(CLI::App& sub, const Context& context) {
     sub.add_option("--vary", a->options.vary, "Vary a backend setting, KEY=V1,V2,... (one curve per value), repeatable")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-    sub.add_flag("--quiet,-q", a->quiet, "No progress lines");
+    sub.add_flag("--quiet,-q", a->quiet, "No progress bar (it is drawn only on a terminal anyway)");
     addPoolOptions(sub, a->pool);
     sub.footer("Writes metrics.json and report.html (speed-accuracy chart with the Pareto front, robustness limit), and each\nfinished run to runs/ as it completes. Runs in parallel (--jobs) and over MPI ranks (mpirun -n R vroc sweep ...).");
     return [a, context] { return sweep(*a, context); };

@@ -10,7 +10,7 @@
 namespace vroc::cli {
 
 void addPoolOptions(CLI::App& sub, PoolArgs& a) {
-    sub.add_option("--jobs,-j", a.jobs, "Runs at once, each in its own worker process (default: every core; under mpirun: one per rank)")
+    sub.add_option("--jobs,-j", a.jobs, "Runs at once, in that many worker processes (default: every core; under mpirun: one per rank)")
         ->check(CLI::NonNegativeNumber);
     sub.add_flag("--resume", a.resume, "Keep the finished runs in --out of an interrupted command and run only the missing ones");
 }
