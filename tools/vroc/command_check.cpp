@@ -14,10 +14,8 @@
 #include "command.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
-#include "vroc/core/recording/atomic_output.h"
 #include "vroc/harness/check.h"
 #include "vroc/harness/check_suite.h"
-#include "vroc/harness/html_report.h"
 #include "vroc/harness/mpi_world.h"
 #include "vroc/harness/output_dir.h"
 
@@ -68,17 +66,13 @@ int check(CheckArgs& a, const Context& context) {
     if (stress) a.options.scenes_dir = stressScenesDir(a.scenes_dir);
     const std::string set = std::string(a.options.long_set ? "long" : "default") + (stress ? "-stress" : "");
     const auto out = a.out_dir.empty() ? harness::defaultOutputDir("check", set) : std::filesystem::path(a.out_dir);
-    prepareRunsOutput(out, a.pool, !a.out_dir.empty());
-    std::shared_ptr<ProgressBar> bar;
-    harness::RunPool pool = makeRunPool(a.pool, out, harness::checkPlan(backends, a.options), "check",
-                                        !a.quiet && context.stderr_is_terminal, bar);
-    const harness::Json doc = harness::runCheckSuite(backends, a.options, pool);
-    bar->finish();
-    if (!harness::mpi::isRoot()) return harness::checkExitCode(doc);   // rank 0 writes the report
-    harness::writeDocument(doc, out / "metrics.json");
-    const auto report = harness::writeReport({doc}, out);
+    const PooledResult r = runPooled(a.pool, out, !a.out_dir.empty(), harness::checkPlan(backends, a.options), "check",
+                                     !a.quiet && context.stderr_is_terminal,
+                                     [&](harness::RunPool& pool) { return harness::runCheckSuite(backends, a.options, pool); });
+    const harness::Json& doc = r.doc;
+    if (!harness::mpi::isRoot()) return harness::checkExitCode(doc);   // rank 0 prints
     std::fputs(harness::checkTableText(doc).c_str(), stdout);
-    std::printf("vroc check: report %s\n", std::filesystem::absolute(report).lexically_normal().string().c_str());
+    std::printf("vroc check: report %s\n", r.report.string().c_str());
     const int code = harness::checkExitCode(doc);
     if (code != 0)
         std::fprintf(stderr, "vroc check: %d check(s) required for native failed on native\n",

@@ -40,14 +40,11 @@ int compare(CompareArgs& a, const Context& context) {
     a.options.progress = !a.quiet;
     a.options.command_line = context.command_line;
     const auto out = a.out_dir.empty() ? harness::defaultOutputDir("compare", scene.name) : std::filesystem::path(a.out_dir);
-    prepareRunsOutput(out, a.pool, !a.out_dir.empty());
-    std::shared_ptr<ProgressBar> bar;
-    harness::RunPool pool = makeRunPool(a.pool, out, harness::comparePlan(scene, backends, a.options), "compare",
-                                        !a.quiet && context.stderr_is_terminal, bar);
-    const auto report = harness::runCompare(scene, backends, a.options, out, pool);
-    bar->finish();
+    const PooledResult r = runPooled(a.pool, out, !a.out_dir.empty(), harness::comparePlan(scene, backends, a.options), "compare",
+                                     !a.quiet && context.stderr_is_terminal,
+                                     [&](harness::RunPool& pool) { return harness::compareScene(scene, backends, a.options, out, pool); });
     if (!harness::mpi::isRoot()) return 0;
-    std::printf("vroc compare: report %s\n", std::filesystem::absolute(report).lexically_normal().string().c_str());
+    std::printf("vroc compare: report %s\n", r.report.string().c_str());
     return 0;
 }
 

@@ -14,7 +14,6 @@
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
 #include "vroc/harness/ensemble.h"
-#include "vroc/harness/html_report.h"
 #include "vroc/harness/mpi_world.h"
 #include "vroc/harness/output_dir.h"
 
@@ -48,17 +47,13 @@ int ensemble(EnsembleArgs& a, const Context& context) {
     a.options.command_line = context.command_line;
     const Scene scene = loadScene(a.scene);
     const auto out = a.out_dir.empty() ? harness::defaultOutputDir("ensemble", scene.name) : std::filesystem::path(a.out_dir);
-    prepareRunsOutput(out, a.pool, !a.out_dir.empty());
-    std::shared_ptr<ProgressBar> bar;
-    harness::RunPool pool = makeRunPool(a.pool, out, harness::ensemblePlan(scene, backends, a.options), "ensemble",
-                                        !a.quiet && context.stderr_is_terminal, bar);
-    const harness::Json doc = harness::runEnsemble(scene, backends, a.options, pool);
-    bar->finish();
-    if (!harness::mpi::isRoot()) return 0;   // rank 0 writes the report
-    harness::writeDocument(doc, out / "metrics.json");
-    const auto report = harness::writeReport({doc}, out);
+    const PooledResult r = runPooled(a.pool, out, !a.out_dir.empty(), harness::ensemblePlan(scene, backends, a.options), "ensemble",
+                                     !a.quiet && context.stderr_is_terminal,
+                                     [&](harness::RunPool& pool) { return harness::runEnsemble(scene, backends, a.options, pool); });
+    if (!harness::mpi::isRoot()) return 0;
+    const harness::Json& doc = r.doc;
     std::fputs(harness::ensembleVerdictText(doc).c_str(), stdout);
-    std::printf("vroc ensemble: report %s\n", std::filesystem::absolute(report).lexically_normal().string().c_str());
+    std::printf("vroc ensemble: report %s\n", r.report.string().c_str());
     return 0;
 }
 

@@ -12,8 +12,6 @@
 #include "frame_steps.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
-#include "vroc/core/recording/atomic_output.h"
-#include "vroc/harness/html_report.h"
 #include "vroc/harness/mpi_world.h"
 #include "vroc/harness/output_dir.h"
 #include "vroc/harness/sweep.h"
@@ -49,19 +47,15 @@ int sweep(SweepArgs& a, const Context& context) {
     harness::sweepCurves(backends, a.options.vary);   // bad --vary fails before any file is written
     const harness::SweepScene scene = harness::loadSweepScene(a.scene);
     const auto out = a.out_dir.empty() ? harness::defaultOutputDir("sweep", scene.scene.name) : std::filesystem::path(a.out_dir);
-    prepareRunsOutput(out, a.pool, !a.out_dir.empty());
-    std::shared_ptr<ProgressBar> bar;
-    harness::RunPool pool = makeRunPool(a.pool, out, harness::sweepPlan(scene, backends, a.options), "sweep",
-                                        !a.quiet && context.stderr_is_terminal, bar);
-    const harness::Json doc = harness::runSweep(scene, backends, a.options, pool);
-    bar->finish();
-    if (!harness::mpi::isRoot()) return 0;   // rank 0 writes the report
-    harness::writeDocument(doc, out / "metrics.json");
-    const auto report = harness::writeReport({doc}, out);
+    const PooledResult r = runPooled(a.pool, out, !a.out_dir.empty(), harness::sweepPlan(scene, backends, a.options), "sweep",
+                                     !a.quiet && context.stderr_is_terminal,
+                                     [&](harness::RunPool& pool) { return harness::runSweep(scene, backends, a.options, pool); });
+    if (!harness::mpi::isRoot()) return 0;
+    const harness::Json& doc = r.doc;
     for (const auto& p : doc["results"]["pareto_front"])
         std::printf("vroc sweep: Pareto front: %s dt %.6g s, cost %.4g s/s, error %.3g m\n", p["series"].get<std::string>().c_str(),
                     p["dt_s"].get<double>(), p["cost_wall_per_sim_s"].get<double>(), p["window_error_m"].get<double>());
-    std::printf("vroc sweep: report %s\n", std::filesystem::absolute(report).lexically_normal().string().c_str());
+    std::printf("vroc sweep: report %s\n", r.report.string().c_str());
     return 0;
 }
 

@@ -5,6 +5,7 @@
 
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/atomic_output.h"
+#include "vroc/harness/html_report.h"
 #include "vroc/harness/mpi_world.h"
 
 namespace vroc::cli {
@@ -25,17 +26,25 @@ void prepareRunsOutput(const std::filesystem::path& out, const PoolArgs& a, bool
     for (const char* f : {"metrics.json", "report.html"}) std::filesystem::remove(out / f, ec);
 }
 
-harness::RunPool makeRunPool(const PoolArgs& a, const std::filesystem::path& out, const harness::Json& plan,
-                             const std::string& command, bool show_progress, std::shared_ptr<ProgressBar>& bar) {
+PooledResult runPooled(const PoolArgs& a, const std::filesystem::path& out, bool out_given, const harness::Json& plan,
+                       const std::string& command, bool show_progress,
+                       const std::function<harness::Json(harness::RunPool&)>& body) {
+    prepareRunsOutput(out, a, out_given);
     harness::PoolOptions o;
     o.jobs = a.jobs;
     o.runs_dir = out / "runs";
     o.resume = a.resume;
     o.plan = plan;
     o.command = "vroc " + command;
-    bar = std::make_shared<ProgressBar>(show_progress && harness::mpi::isRoot(), "vroc " + command);
+    auto bar = std::make_shared<ProgressBar>(show_progress && harness::mpi::isRoot(), "vroc " + command);
     o.progress = [bar](const harness::PoolProgress& p) { bar->updateRuns(p.done, p.failed, p.total, p.seconds_left); };
-    return harness::RunPool(std::move(o));
+    harness::RunPool pool(std::move(o));
+    PooledResult r{body(pool), {}};
+    bar->finish();
+    if (!harness::mpi::isRoot()) return r;   // rank 0 writes the files
+    harness::writeDocument(r.doc, out / "metrics.json");
+    r.report = std::filesystem::absolute(harness::writeReport({r.doc}, out)).lexically_normal();
+    return r;
 }
 
 }  // namespace vroc::cli

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -29,8 +30,17 @@ void addPoolOptions(CLI::App& sub, PoolArgs& args);
 /// needs the folder of the interrupted command (--out). Throws InputError.
 void prepareRunsOutput(const std::filesystem::path& out, const PoolArgs& args, bool out_given);
 
-/// A pool writing finished runs to <out>/runs, with a progress bar on a terminal (rank 0 only).
-harness::RunPool makeRunPool(const PoolArgs& args, const std::filesystem::path& out, const harness::Json& plan,
-                             const std::string& command, bool show_progress, std::shared_ptr<ProgressBar>& bar);
+/// What a pooled command produced: its document on every rank; on rank 0 also the report it wrote.
+struct PooledResult {
+    harness::Json doc;
+    std::filesystem::path report;   ///< absolute; empty on ranks other than 0
+};
+
+/// The life of a pooled command: prepares `out`, makes the pool (finished runs to <out>/runs, a
+/// progress bar on a terminal), runs `body` on it, and on rank 0 writes <out>/metrics.json and
+/// report.html. `out_given`: --out was on the command line (needed by --resume).
+PooledResult runPooled(const PoolArgs& args, const std::filesystem::path& out, bool out_given, const harness::Json& plan,
+                       const std::string& command, bool show_progress,
+                       const std::function<harness::Json(harness::RunPool&)>& body);
 
 }  // namespace vroc::cli

@@ -391,12 +391,4 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& reques
     return doc;
 }
 
-std::filesystem::path runCompare(const Scene& scene, const std::vector<SelectedBackend>& backends,
-                                 const CompareOptions& options, const std::filesystem::path& out_dir, RunPool& pool) {
-    Json doc = compareScene(scene, backends, options, out_dir, pool);
-    if (!mpi::isRoot()) return {};
-    writeDocument(doc, out_dir / "metrics.json");
-    return writeReport({doc}, out_dir);
-}
-
 }  // namespace vroc::harness

@@ -39,9 +39,4 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& backen
 /// What the comparison's runs depend on, for RunPool (--resume).
 Json comparePlan(const Scene& scene, const std::vector<SelectedBackend>& backends, const CompareOptions& options);
 
-/// compareScene + metrics.json + report.html in `out_dir` (rank 0). Returns the report path
-/// (empty on other ranks). The caller prepares `out_dir`.
-std::filesystem::path runCompare(const Scene& scene, const std::vector<SelectedBackend>& backends,
-                                 const CompareOptions& options, const std::filesystem::path& out_dir, RunPool& pool);
-
 }  // namespace vroc::harness
