@@ -28,13 +28,6 @@ constexpr int kBouncesReported = 3;
 
 Json optionalNumber(const std::optional<double>& v) { return v ? number(*v) : Json(nullptr); }
 
-std::vector<int> virtualBodies(const Scene& scene) {
-    std::vector<int> out;
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-        if (!scene.bodies[i].isStatic()) out.push_back(static_cast<int>(i));
-    return out;
-}
-
 BackendRuns runAll(const Scene& scene, const SelectedBackend& b, const CompareOptions& o, double dt,
                    std::int64_t frames) {
     BackendRuns r;
@@ -87,7 +80,7 @@ Json invariantsJson(const RunTrace& t, const Scene& scene) {
 
 Json eventsJson(const RunTrace& t, const Scene& scene) {
     Json per_body = Json::object();
-    for (int b : virtualBodies(scene)) {
+    for (int b : virtualBodyIndices(scene)) {
         const auto impacts = impactTimes(t.events, b, 2.5 * t.frame_dt);
         Json list = Json::array();
         for (std::size_t k = 0; k < impacts.size() && k < static_cast<std::size_t>(kBouncesReported + 1); ++k)
@@ -316,7 +309,7 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& reques
         const Divergence d = divergence(scene, ref, runs[i].main);
         const Significance s = significantDivergence(d.distance, twin_spread[0].distance, twin_spread[i].distance, d.t);
         Json per_body = Json::object();
-        const auto vb = virtualBodies(scene);
+        const auto vb = virtualBodyIndices(scene);
         for (std::size_t v = 0; v < vb.size(); ++v) per_body[scene.bodies[static_cast<std::size_t>(vb[v])].name] = d.per_body_max[v];
         pairs.push_back({{"a", backends[0].info->name}, {"b", backends[i].info->name},
                          {"max_divergence_m", *std::max_element(d.distance.begin(), d.distance.end())},
@@ -349,7 +342,7 @@ Json compareScene(const Scene& scene, const std::vector<SelectedBackend>& reques
             {"pair", "max [m]", "final [m]", "first significant [s]", "significant fraction [-]"}, pair_rows));
 
     // Charts: trajectories, divergence, energy, penetration, windows, timing histograms.
-    const auto vb = virtualBodies(scene);
+    const auto vb = virtualBodyIndices(scene);
     for (std::size_t k = 0; k < vb.size() && k < 3; ++k) {
         const int body = vb[k];
         const int axis = liveliestAxis(ref, body);

@@ -22,13 +22,6 @@ namespace {
 // Bodies named one by one in the tests; beyond this only their joint rest positions are tested.
 constexpr std::size_t kMaxBodiesNamed = 8;
 
-std::vector<int> virtualBodies(const Scene& scene) {
-    std::vector<int> out;
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-        if (!scene.bodies[i].isStatic()) out.push_back(static_cast<int>(i));
-    return out;
-}
-
 struct Observable {
     std::string id;       ///< key in each member's result
     std::string title;
@@ -37,7 +30,7 @@ struct Observable {
 
 // The observables of a scene, in report order.
 std::vector<Observable> observables(const Scene& scene) {
-    const std::vector<int> bodies = virtualBodies(scene);
+    const std::vector<int> bodies = virtualBodyIndices(scene);
     std::vector<Observable> out = {
         {"rest_positions", "rest positions of all virtual bodies (joint)", "m"},
         {"first_impact_time", "time of the first impact", "s"},
@@ -65,7 +58,7 @@ Json runMember(const Scene& scene, const SelectedBackend& b, const EnsembleOptio
     ro.record_every = std::max<std::int64_t>(1, ro.frames / std::max(1, o.series_points));
     ro.initial_states = ensembleMemberStates(scene, o.perturb, o.seed, member);
     const RunTrace t = runBackend(*b.info, scene, b.settings, ro);
-    const std::vector<int> bodies = virtualBodies(scene);
+    const std::vector<int> bodies = virtualBodyIndices(scene);
     const double merge = 2.5 * o.frame_dt;   // contact points of one impact arrive over a few frames
     const double end = t.times.back();
     Json obs = Json::object();

@@ -3,6 +3,13 @@
 
 namespace vroc::harness {
 
+std::vector<int> virtualBodyIndices(const Scene& scene) {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+        if (!scene.bodies[i].isStatic()) out.push_back(static_cast<int>(i));
+    return out;
+}
+
 Vec3 centerOfMass(const Body& body, const BodyState& state) {
     return state.pose.apply(body.mass_properties.center_of_mass);
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "vroc/core/backend.h"
 #include "vroc/core/scene.h"
@@ -19,6 +20,9 @@ struct Invariants {
 
 /// Sums over the scene's virtual bodies; `states` is indexed like Scene::bodies.
 Invariants computeInvariants(const Scene& scene, std::span<const BodyState> states);
+
+/// Indices into Scene::bodies of the virtual (moving) bodies, in scene order.
+std::vector<int> virtualBodyIndices(const Scene& scene);
 
 /// [m] world position of a body's centre of mass.
 Vec3 centerOfMass(const Body& body, const BodyState& state);
