@@ -70,6 +70,22 @@ MotionBound NativeBackend::motionBound(int body, double& valid_until) const {
     return m;
 }
 
+std::optional<RigidMotion> NativeBackend::rigidMotion(int body, double t, double duration) const {
+    const std::size_t i = static_cast<std::size_t>(body);
+    const RigidBody& rb = bodies_[i];
+    if (rb.is_static || asleep_[i] != 0) return RigidMotion::stationary(rb.com);
+    if (valid_at_[i] != t) return std::nullopt;
+    const bool drifting = drift_until_[i] > valid_at_[i];
+    RigidMotion m;
+    m.com = rb.com;
+    m.velocity = rb.velocity;
+    m.acceleration = drifting ? drift_acceleration_[i] : scene_.gravity;
+    m.angular_velocity = rb.angularVelocity();
+    m.curvature = rotationCurvatureBound(rb.angular_momentum.norm(), drifting ? drift_torque_[i].norm() : 0.0,
+                                         rb.smallest_moment, duration, rb.isotropic);
+    return m;
+}
+
 Aabb NativeBackend::sweptBox(int body) const {
     const std::size_t i = static_cast<std::size_t>(body);
     const RigidBody& rb = bodies_[i];

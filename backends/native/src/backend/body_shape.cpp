@@ -56,6 +56,18 @@ BodyShape BodyShape::fromScene(const Shape& shape, const Vec3& com) {
     return s;
 }
 
+SupportPoints ConvexPart::supportPoints(const Pose& world) const {
+    SupportPoints s;
+    if (is_sphere) {
+        s.points.push_back(world.position);
+        s.pad = radius;
+        return s;
+    }
+    s.points.reserve(static_cast<std::size_t>(mesh->vertexCount()));
+    for (int v = 0; v < mesh->vertexCount(); ++v) s.points.push_back(world.apply(mesh->position(v)));
+    return s;
+}
+
 Aabb BodyShape::worldAabb(const Pose& frame) const {
     const double inf = std::numeric_limits<double>::infinity();
     Aabb box{Vec3::Constant(inf), Vec3::Constant(-inf)};

@@ -8,6 +8,7 @@
 
 #include "geometry/convex_mesh.h"
 #include "scheduling/aabb.h"
+#include "scheduling/vertex_approach_bound.h"
 #include "vroc/core/scene.h"
 
 namespace vroc::native {
@@ -17,6 +18,10 @@ struct ConvexPart {
     double radius = 0.0;                          ///< [m] sphere radius
     std::shared_ptr<const ConvexMesh> mesh;       ///< polyhedra: shared, immutable
     Pose local;                                   ///< part frame -> scene body frame
+
+    /// The part's support points at `world` (part frame -> world): a polytope's vertices, or a
+    /// sphere's centre padded by its radius.
+    SupportPoints supportPoints(const Pose& world) const;
 };
 
 struct BodyShape {

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <set>
 #include <unordered_map>
 #include <vector>
@@ -104,6 +105,10 @@ private:
     /// [s] for a free sphere leaving a static body it touches: the time until it is clear of
     /// touching (then the contact time refinement takes over); -1 for any other pair.
     double bouncingSphereRecheck(const PairSample& s, double t) const;
+    /// [s] the per-point bound (vertex_approach_bound.h) of one part pair of a pair whose bodies
+    /// are at t: when its projected gap along `normal` could fall below `floor` [m]; 0 if unknown.
+    double supportPointTime(const PairState& ps, std::size_t part_pair, const Vec3& normal, double floor, double t,
+                            double horizon) const;
     /// [s] the earliest island tick (cached; recomputed after ticks or the touching set changed).
     double nextTick();
     void setTick(int body, double time) {
@@ -135,6 +140,9 @@ private:
     /// Motion of the body from valid_at_ on, and the time [s] until which it holds.
     MotionBound motionBound(int body, double& valid_until) const;
     MotionBound ballisticBound(int body) const;
+    /// The body's motion from time t on for the per-point bound (valid for `duration` [s] or until
+    /// its drift ends); nullopt if the body's state is not at t.
+    std::optional<RigidMotion> rigidMotion(int body, double t, double duration) const;
     Aabb sweptBox(int body) const;
     /// Starts a drift of `h` [s] at time t with the contact phase's impulses.
     void startDrift(int body, const BodyImpulse& imp, double t, double h);

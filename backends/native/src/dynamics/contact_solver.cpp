@@ -311,6 +311,17 @@ double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, P
     return std::max(change, relaxTorsion(wb, cs, p, freeze_a, freeze_b));
 }
 
+// The patches ordered by level (the higher of their bodies' levels; stable, so ties keep the
+// manifold order and the result stays a function of the input order alone).
+std::vector<Patch*> patchesByLevel(const std::vector<WorkBody>& wb, std::vector<Patch>& patches) {
+    std::vector<Patch*> order;
+    order.reserve(patches.size());
+    for (Patch& p : patches) order.push_back(&p);
+    auto level = [&](const Patch* p) { return std::max(wb[p->friction.a].level, wb[p->friction.b].level); };
+    std::stable_sort(order.begin(), order.end(), [&](const Patch* x, const Patch* y) { return level(x) < level(y); });
+    return order;
+}
+
 int shockPropagation(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs,
                      std::vector<Patch>& patches, int sweeps, double tolerance) {
     // Bodies not connected to a static one keep level kUnreached: the Gauss-Seidel result stands.
@@ -504,14 +515,21 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
                 ++cold;
         const bool large_cold = manifolds.size() >= kLargeIsland && 2 * cold > manifolds.size();
         const int sweeps = large_cold ? settings.cold_factor * settings.iterations : settings.iterations;
+        // Symmetric Gauss-Seidel in stack order: sweeps alternate up and down the levels (graph
+        // distance from the static bodies) and the last one goes up. A load then crosses a whole
+        // pyramid in one sweep pair instead of one level per sweep; on a base-20 pyramid this halves
+        // the settling of the first (cold) solve, and on a base-30 one it is what holds it.
+        assignLevels(wb, bodies, cs);
+        const std::vector<Patch*> up = patchesByLevel(wb, patches);
         for (int it = 0; it < sweeps; ++it) {
+            const bool upwards = (sweeps - 1 - it) % 2 == 0;
             double change = 0.0;
-            for (auto& p : patches) change = std::max(change, relaxPatch(wb, cs, p, false, false));
+            for (std::size_t k = 0; k < up.size(); ++k)
+                change = std::max(change, relaxPatch(wb, cs, *up[upwards ? k : up.size() - 1 - k], false, false));
             ++report.sweeps;
             if (change <= settings.tolerance) break;
         }
         if (settings.shock_iterations > 0) {
-            assignLevels(wb, bodies, cs);
             report.shock_sweeps = shockPropagation(wb, cs, patches, settings.shock_iterations, settings.tolerance);
         }
     }
