@@ -17,7 +17,7 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "[m/s] normal approach speed below which a collision is plastic (e = 0)"});
     s.push_back({"native.collision_iterations", T::Integer, "5", 1, 1000, {},
                  "collision-phase sweeps over the touching pairs"});
-    s.push_back({"native.contact_iterations", T::Integer, "20", 1, 10000, {},
+    s.push_back({"native.contact_iterations", T::Integer, "10", 1, 10000, {},
                  "contact-phase Gauss-Seidel sweeps over the contact points"});
     s.push_back({"native.shock_iterations", T::Integer, "8", 0, 1000, {},
                  "shock-propagation sweeps per stack level (0 turns it off)"});

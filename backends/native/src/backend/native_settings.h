@@ -15,7 +15,7 @@ struct NativeSettings {
     int max_internal_steps = 20000;         ///< per frame; beyond it the rest of the frame is one step
     double restitution_threshold = 0.0;     ///< [m/s] approach speeds below it collide with e = 0
     int collision_iterations = 5;           ///< collision-phase sweeps over touching pairs
-    int contact_iterations = 20;            ///< contact-phase Gauss-Seidel sweeps
+    int contact_iterations = 10;            ///< contact-phase Gauss-Seidel sweeps
     int shock_iterations = 8;               ///< shock-propagation sweeps per level (0 = off)
     double solver_tolerance = 0.0;          ///< [m/s] contact sweeps stop once a sweep changes no velocity more
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)

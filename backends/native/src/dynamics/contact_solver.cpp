@@ -193,6 +193,8 @@ struct Patch {
                                          Eigen::Matrix4d::Zero()};
     std::array<bool, 4> block_cached{};
     std::array<TangentMass, 4> tangent;
+    std::array<double, 4> torsion_k{};   // [1/(kg m^2)] n.(I_a^-1 + I_b^-1).n per freeze state
+    std::array<bool, 4> torsion_cached{};
 };
 
 // Torsional (spin) friction of a polygon patch: a uniform pressure over a disc of radius a gives
@@ -203,7 +205,12 @@ double relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint
     if (f.mu <= 0.0 || p.torsion_radius <= 0.0) return 0.0;
     WorkBody& a = wb[f.a];
     WorkBody& b = wb[f.b];
-    const double k = (freeze_a ? 0.0 : f.n.dot(a.inv_inertia * f.n)) + (freeze_b ? 0.0 : f.n.dot(b.inv_inertia * f.n));
+    const auto key = static_cast<std::size_t>(freezeKey(freeze_a, freeze_b));
+    if (!p.torsion_cached[key]) {
+        p.torsion_k[key] = (freeze_a ? 0.0 : f.n.dot(a.inv_inertia * f.n)) + (freeze_b ? 0.0 : f.n.dot(b.inv_inertia * f.n));
+        p.torsion_cached[key] = true;
+    }
+    const double k = p.torsion_k[key];
     if (!(k > 0.0)) return 0.0;
     double normal_sum = 0.0;
     for (int i = p.first; i < p.first + p.count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;

@@ -19,8 +19,8 @@ namespace vroc::native {
 enum class ResponseModel { Vroc1995, NewtonCoulomb };
 
 struct ContactSolverSettings {
-    int iterations = 20;          ///< Gauss-Seidel sweeps over all contact points
-    int cold_factor = 10;         ///< sweeps x this for a large island whose manifolds are mostly cold
+    int iterations = 10;          ///< Gauss-Seidel sweeps over all contact points
+    int cold_factor = 24;         ///< sweeps x this for a large island whose manifolds are mostly cold
     int shock_iterations = 8;     ///< sweeps per level during shock propagation (0 = off)
     /// [m/s] sweeps (and each level's shock sweeps) stop early once no relaxation in a whole sweep
     /// changed a contact's relative velocity by more than this; 0 runs every sweep.
