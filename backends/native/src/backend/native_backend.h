@@ -121,6 +121,9 @@ private:
     /// came): their touching pairs are sampled too, then the collision phase, the contact phase per
     /// island and the drifts; every sample is then scheduled.
     void solveIslands(std::vector<PairSample>& samples, double t);
+    /// [s] the length of an island tick starting at t: to the first point of the sub-step grid
+    /// (anchored at the frame end) at least half a sub-step away.
+    double gridTick(double t) const;
     /// Restitution and friction impulses at approaching manifolds; a `resting` one (held at its
     /// last solve) approaching slower than `resting_speed` [m/s] is stopped plastically (e = 0).
     void collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
