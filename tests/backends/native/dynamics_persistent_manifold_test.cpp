@@ -67,9 +67,11 @@ TEST(DynamicsPersistentManifold, WarmStartMatchesCoincidingPointsOnly) {
     EXPECT_DOUBLE_EQ(next.point_impulse[1], 0.0);   // new point: cold
     EXPECT_DOUBLE_EQ(next.point_impulse[2], 0.5);   // 1.0 x 0.5
     EXPECT_DOUBLE_EQ(next.torsion_impulse, 0.125);
-    // A longer step never scales an impulse up.
+    // A longer step scales it up in proportion (a resting load is m g h), at most 3x.
     warmStartManifold(cache, moved, 0.02, 1e-3, next);
-    EXPECT_DOUBLE_EQ(next.point_impulse[0], 2.0);
+    EXPECT_DOUBLE_EQ(next.point_impulse[0], 4.0);
+    warmStartManifold(cache, moved, 0.1, 1e-3, next);
+    EXPECT_DOUBLE_EQ(next.point_impulse[0], 6.0);
 }
 
 }  // namespace

@@ -45,15 +45,26 @@ std::vector<Vec3> reduceContactPoints(const std::vector<Vec3>& points, const Vec
     return out;
 }
 
+namespace {
+
+// Largest factor a warm start's impulses are scaled up by (a step 3x its cache's: the grid's 1.5 / 0.5).
+constexpr double kMaxWarmScale = 3.0;
+
+}  // namespace
+
 void warmStartManifold(const PersistentManifold& cache, const Pose& frame_a, double step,
                        double match_radius, ContactManifold& m) {
     m.point_impulse.assign(m.points.size(), 0.0);
     m.tangent_impulse = Vec3::Zero();
     m.torsion_impulse = 0.0;
     if (cache.empty() || !(step > 0.0)) return;
-    // A resting load's impulse grows with the step; never scale up an impulse solved over a shorter
-    // step (it may hold an impact's share, and a too-large start is what Gauss-Seidel undoes worst).
-    const double scale = std::min(1.0, step / cache.step);
+    // A resting load's impulse grows with the step (m g h). Island ticks end on the sub-step grid,
+    // so a tick after an off-grid solve is 0.5 to 1.5 sub-steps long and the next is a whole one:
+    // the impulse follows the step, or a resting pile restarts below its load after every short
+    // tick and jitters. Scaling up is capped at kMaxWarmScale: an impulse solved over a much shorter
+    // step (a protection tick) may hold an impact's share, and a too-large start is what
+    // Gauss-Seidel undoes worst.
+    const double scale = std::min(kMaxWarmScale, step / cache.step);
     const double r2 = match_radius * match_radius;
     const Pose to_a = frame_a.inverse();
     std::vector<std::uint8_t> used(cache.local_a.size(), 0);

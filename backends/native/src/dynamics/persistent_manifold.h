@@ -35,7 +35,7 @@ struct PersistentManifold {
 std::vector<Vec3> reduceContactPoints(const std::vector<Vec3>& points, const Vec3& normal);
 
 /// Fills m.point_impulse, m.tangent_impulse and m.torsion_impulse from the cache for a solve of
-/// `step` [s] (impulses scale with the step: a resting load needs m g h). `frame_a` is body A's
+/// `step` [s] (impulses scale with the step, up by at most 3x: a resting load needs m g h). `frame_a` is body A's
 /// scene frame -> world. Points without a match start at zero.
 void warmStartManifold(const PersistentManifold& cache, const Pose& frame_a, double step,
                        double match_radius, ContactManifold& m);
