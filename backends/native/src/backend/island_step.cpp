@@ -20,8 +20,10 @@ constexpr double kMatchFraction = 0.05;
 struct IslandSolve {
     std::vector<int> bodies;              // ascending global indices
     std::vector<int> manifolds;           // indices into the step's manifold list
+    std::vector<RigidBody> local;         // per local body: after the collision phase
     std::vector<BodyImpulse> impulses;    // per local body
     std::vector<ContactManifold> solved;  // per local manifold, with outputs
+    CollisionPhaseReport collision;
     ContactSolverReport report;
 };
 
@@ -124,9 +126,8 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
                              held(manifolds[m].body_b)
                          ? 1
                          : 0;
-    collisionPhase(manifolds, resting, scene_.gravity.norm() * h);
 
-    // Contact phase, one solve per island (islands are independent: any worker, same bits).
+    // Collision and contact phase, per island (islands share no dynamic body: any worker, same bits).
     std::map<int, IslandSolve> by_root;
     for (std::size_t m = 0; m < manifolds.size(); ++m) {
         IslandSolve& is = by_root[islandOfPair(manifolds[m].pair)];
@@ -151,28 +152,41 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // not from the penetration query, and the band [0, cd/4] absorbs a resting pile's jitter.
     solver.correction_floor = -0.01 * cd;
     solver.correction_target = 0.25 * cd;
+    const double resting_speed = scene_.gravity.norm() * h;
     auto solveOne = [&](IslandSolve& is) {
-        std::vector<RigidBody> local;
-        local.reserve(is.bodies.size());
-        for (int id : is.bodies) local.push_back(bodies_[static_cast<std::size_t>(id)]);
+        is.local.reserve(is.bodies.size());
+        for (int id : is.bodies) is.local.push_back(bodies_[static_cast<std::size_t>(id)]);
         auto localOf = [&](int id) {
             return static_cast<int>(std::lower_bound(is.bodies.begin(), is.bodies.end(), id) - is.bodies.begin());
         };
+        std::vector<std::uint8_t> local_resting;
         for (int m : is.manifolds) {
             ContactManifold lm = manifolds[static_cast<std::size_t>(m)];
             lm.body_a = localOf(lm.body_a);
             lm.body_b = localOf(lm.body_b);
             is.solved.push_back(std::move(lm));
+            local_resting.push_back(resting[static_cast<std::size_t>(m)]);
         }
-        is.report = solveContactPhase(local, is.solved, h, scene_.gravity, solver, is.impulses);
+        is.collision = collisionPhase(is.local, is.solved, local_resting, resting_speed);
+        is.report = solveContactPhase(is.local, is.solved, h, scene_.gravity, solver, is.impulses);
     };
     if (work.size() > 1 && manifolds.size() >= 16)
         partition_->run(work.size(), [&](std::size_t k, int) { solveOne(*work[k]); });
     else
         for (IslandSolve* is : work) solveOne(*is);
 
-    // Results in island order: impulses become drifts, manifolds go back to their caches.
+    // Results in island order: collision impulses change the bodies now, contact impulses become
+    // drifts, manifolds go back to their caches.
     for (IslandSolve* is : work) {
+        if (is->collision.ill_conditioned > 0) warn("ill_conditioned_solve", is->collision.ill_conditioned);
+        if (is->collision.degenerate > 0) warn("degenerate_contact", is->collision.degenerate);
+        if (is->collision.nonfinite > 0) warn("nonfinite_state", is->collision.nonfinite);
+        for (std::size_t k = 0; k < is->bodies.size(); ++k) {
+            if (is->collision.impulsed[k] == 0) continue;
+            const int body = is->bodies[k];
+            bodies_[static_cast<std::size_t>(body)] = is->local[k];
+            endDrift(body);   // the old drift was for the old velocity: it flies from now until the solve
+        }
         ++stats_.step_solves;
         stats_.contact_points += is->report.points;
         stats_.contact_sweeps += is->report.sweeps;
@@ -184,6 +198,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             const int m = is->manifolds[k];
             ContactManifold& out = manifolds[static_cast<std::size_t>(m)];
             const ContactManifold& lm = is->solved[k];
+            out.collision_impulse = lm.collision_impulse;
             out.contact_impulse = lm.contact_impulse;
             out.point_impulse = lm.point_impulse;
             out.tangent_impulse = lm.tangent_impulse;
@@ -225,14 +240,16 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
 }
 
-void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
-                                   double resting_speed) {
+CollisionPhaseReport NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                                                   const std::vector<std::uint8_t>& resting, double resting_speed) const {
+    CollisionPhaseReport report;
+    report.impulsed.assign(bodies.size(), 0);
     for (int sweep = 0; sweep < settings_.collision_iterations; ++sweep) {
         bool any = false;
         for (std::size_t k = 0; k < manifolds.size(); ++k) {
             ContactManifold& m = manifolds[k];
-            RigidBody& a = bodies_[static_cast<std::size_t>(m.body_a)];
-            RigidBody& b = bodies_[static_cast<std::size_t>(m.body_b)];
+            RigidBody& a = bodies[static_cast<std::size_t>(m.body_a)];
+            RigidBody& b = bodies[static_cast<std::size_t>(m.body_b)];
             const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
             const double un = u.dot(m.normal);
             if (!(un < 0.0)) continue;
@@ -246,23 +263,23 @@ void NativeBackend::collisionPhase(std::vector<ContactManifold>& manifolds, cons
                 settings_.response == ResponseModel::Vroc1995
                     ? vroc1995Impulse(a, b, m.centroid, m.normal, e)
                     : newtonCoulombImpulse(a, b, m.centroid, m.normal, e, m.friction);
-            if (r.trouble == ImpulseTrouble::IllConditioned) warn("ill_conditioned_solve");
-            if (r.trouble == ImpulseTrouble::Degenerate) warn("degenerate_contact");
+            if (r.trouble == ImpulseTrouble::IllConditioned) ++report.ill_conditioned;
+            if (r.trouble == ImpulseTrouble::Degenerate) ++report.degenerate;
             if (!r.impulse.allFinite()) {
-                warn("nonfinite_state");
+                ++report.nonfinite;
                 continue;
             }
             if (r.impulse.isZero(0.0)) continue;
             a.applyImpulse(-r.impulse, m.centroid);
             b.applyImpulse(r.impulse, m.centroid);
-            // The old drift was for the old velocity: the bodies fly from now until the solve.
             for (int body : {m.body_a, m.body_b})
-                if (!is_static_[static_cast<std::size_t>(body)]) endDrift(body);
+                if (!bodies[static_cast<std::size_t>(body)].is_static) report.impulsed[static_cast<std::size_t>(body)] = 1;
             m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
             any = true;
         }
         if (!any) break;
     }
+    return report;
 }
 
 void NativeBackend::emitEvents(const std::vector<PairSample>& samples, double t) {

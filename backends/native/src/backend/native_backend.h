@@ -37,6 +37,13 @@
 
 namespace vroc::native {
 
+/// What an island's collision phase did: its troubles (counted as warnings by the caller) and which
+/// of its bodies an impulse changed.
+struct CollisionPhaseReport {
+    std::uint64_t ill_conditioned = 0, degenerate = 0, nonfinite = 0;
+    std::vector<std::uint8_t> impulsed;   ///< per body of the island
+};
+
 class NativeBackend final : public Backend {
 public:
     NativeBackend(const Scene& scene, const NativeSettings& settings);
@@ -124,10 +131,12 @@ private:
     /// [s] the length of an island tick starting at t: to the first point of the sub-step grid
     /// (anchored at the frame end) at least half a sub-step away.
     double gridTick(double t) const;
-    /// Restitution and friction impulses at approaching manifolds; a `resting` one (held at its
-    /// last solve) approaching slower than `resting_speed` [m/s] is stopped plastically (e = 0).
-    void collisionPhase(std::vector<ContactManifold>& manifolds, const std::vector<std::uint8_t>& resting,
-                        double resting_speed);
+    /// Restitution and friction impulses at approaching manifolds, applied to `bodies` (one island's
+    /// local copies; manifolds index them); a `resting` one (held at its last solve) approaching
+    /// slower than `resting_speed` [m/s] is stopped plastically (e = 0). Pure in its arguments, so
+    /// islands run on any worker.
+    CollisionPhaseReport collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                                        const std::vector<std::uint8_t>& resting, double resting_speed) const;
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Impacts are resolved at touching, not at the window gap: a free sphere meeting a static body
     /// inside the window gets its refined touching time (within `horizon` [s] of `t`) as its pair's
