@@ -112,6 +112,11 @@ private:
     /// [s] for a free sphere leaving a static body it touches: the time until it is clear of
     /// touching (then the contact time refinement takes over); -1 for any other pair.
     double bouncingSphereRecheck(const PairSample& s, double t) const;
+    /// [s] when part pair `part_pair` (gap g at t) could close by `allowed` [m], down to the gap
+    /// `floor` [m] (= g.distance - allowed, passed as the caller computed it): the longer of the pair
+    /// bound (earliestCollisionTime) and the per-point bound; >= horizon means not before it.
+    double closeTime(const PairState& ps, std::size_t part_pair, const PairSample::PartGap& g, double allowed,
+                     double floor, const MotionBound& ma, const MotionBound& mb, double t, double horizon) const;
     /// [s] the per-point bound (vertex_approach_bound.h) of one part pair of a pair whose bodies
     /// are at t: when its projected gap along `normal` could fall below `floor` [m]; 0 if unknown.
     double supportPointTime(const PairState& ps, std::size_t part_pair, const Vec3& normal, double floor, double t,

@@ -194,6 +194,17 @@ double NativeBackend::bouncingSphereRecheck(const PairSample& s, double t) const
     return (clear - s.distance) / away;
 }
 
+double NativeBackend::closeTime(const PairState& ps, std::size_t part_pair, const PairSample::PartGap& g,
+                                double allowed, double floor, const MotionBound& ma, const MotionBound& mb, double t,
+                                double horizon) const {
+    const double pair_time = earliestCollisionTime(allowed, g.normal, ma, mb, horizon);
+    if (!(pair_time < horizon)) return pair_time;
+    // A rotating body's far vertices start from their own gaps, and its held contact points approach
+    // at their solved speed: the per-point bound is much longer for a tumbling box. Both are safe,
+    // so the longer one is.
+    return std::max(pair_time, supportPointTime(ps, part_pair, g.normal, floor, t, horizon));
+}
+
 double NativeBackend::supportPointTime(const PairState& ps, std::size_t part_pair, const Vec3& normal, double floor,
                                        double t, double horizon) const {
     const std::optional<RigidMotion> ma = rigidMotion(ps.a, t, horizon);
@@ -225,13 +236,9 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
             key = s.contact_time;   // certified by the contact time refinement
         } else {
             const double window = std::max(0.0, horizon);
-            for (std::size_t k = 0; k < s.parts.size(); ++k) {
-                const PairSample::PartGap& g = s.parts[k];
-                double part_time = earliestCollisionTime(g.distance - kApproachTarget * cd, g.normal, ma, mb, window);
-                if (part_time < window)   // the longer of two safe bounds (see the touching pairs below)
-                    part_time = std::max(part_time, supportPointTime(ps, k, g.normal, kApproachTarget * cd, t, window));
-                key = std::min(key, t + part_time);
-            }
+            for (std::size_t k = 0; k < s.parts.size(); ++k)
+                key = std::min(key, t + closeTime(ps, k, s.parts[k], s.parts[k].distance - kApproachTarget * cd,
+                                                  kApproachTarget * cd, ma, mb, t, window));
         }
         queue_.push(s.pair, ps.a, ps.b, key);
         return;
@@ -255,13 +262,7 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
             held ? g.distance - kSolvedFloor * cd
                  : (g.distance < cd ? std::max(g.distance - kTouchingFloor * cd, kTouchingMinAllowance * cd)
                                     : g.distance - kApproachTarget * cd);
-        double part_bound = earliestCollisionTime(allowed, g.normal, ma, mb, bound);
-        // A rotating body's far vertices start from their own gaps, and its held contact points
-        // approach at their solved speed: the per-point bound is much longer for a tumbling box.
-        // Both are safe, so the longer one is.
-        if (part_bound < bound)
-            part_bound = std::max(part_bound, supportPointTime(ps, k, g.normal, g.distance - allowed, t, bound));
-        bound = std::min(bound, part_bound);
+        bound = std::min(bound, closeTime(ps, k, g, allowed, g.distance - allowed, ma, mb, t, bound));
     }
     // A sphere that just bounced off a static body flies freely inside the window: it is looked at
     // again as soon as it is clear of touching, so that the contact time refinement (deferImpacts)
