@@ -16,15 +16,15 @@ struct Height {
     double accel;   // [m/s^2]
 };
 
-// Upper (sign = +1, A's points) or lower (sign = -1, B's points) bounds on the points' heights.
-std::vector<Height> heights(const SupportPoints& s, const RigidMotion& m, const Vec3& n, double sign) {
+// Upper bounds on the points' heights along n (B's points are passed with -n).
+std::vector<Height> heights(const SupportPoints& s, const RigidMotion& m, const Vec3& n) {
     std::vector<Height> out;
     out.reserve(s.points.size());
     const double n_accel = n.dot(m.acceleration);
     for (const Vec3& p : s.points) {
         const Vec3 rho = p - m.com;
-        out.push_back({n.dot(p) + sign * s.pad, n.dot(m.velocity + m.angular_velocity.cross(rho)),
-                       n_accel + sign * m.curvature * rho.norm()});
+        out.push_back({n.dot(p) + s.pad, n.dot(m.velocity + m.angular_velocity.cross(rho)),
+                       n_accel + m.curvature * rho.norm()});
     }
     return out;
 }
@@ -63,8 +63,8 @@ double vertexApproachTime(const SupportPoints& a, const RigidMotion& ma, const S
     if (a.points.empty() || b.points.empty() || !(horizon > 0.0)) return 0.0;
     if (!normal_ab.allFinite() || std::abs(normal_ab.squaredNorm() - 1.0) > 1e-9) return 0.0;
     const Vec3& n = normal_ab;
-    const std::vector<Height> ha = heights(a, ma, n, +1.0);    // A's points: upper bounds
-    const std::vector<Height> hb = heights(b, mb, -n, +1.0);   // B's points seen along -n: upper bounds
+    const std::vector<Height> ha = heights(a, ma, n);    // A's points: upper bounds
+    const std::vector<Height> hb = heights(b, mb, -n);   // B's points seen along -n: upper bounds
     // From here B's heights are measured along -n, so a pair's gap is -(hb.level) - ha.level.
     for (const Height& x : ha)
         if (!std::isfinite(x.level) || !std::isfinite(x.speed) || std::isnan(x.accel)) return 0.0;
