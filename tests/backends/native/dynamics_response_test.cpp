@@ -14,21 +14,6 @@
 namespace vroc::native::test {
 namespace {
 
-RigidBody randomBody(std::mt19937_64& rng, bool is_static = false) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Body b;
-    b.name = "b";
-    b.role = is_static ? BodyRole::Real : BodyRole::Virtual;
-    b.shape = Shape::box(Vec3(0.1 + 0.5 * std::abs(u(rng)), 0.1 + 0.5 * std::abs(u(rng)),
-                              0.1 + 0.5 * std::abs(u(rng))));
-    if (!is_static) b.mass_properties = massProperties(b.shape, 0.5 + 5 * std::abs(u(rng)));
-    b.pose = at(Vec3(u(rng), u(rng), u(rng)) * 3,
-                Quat(Eigen::AngleAxisd(3 * u(rng), Vec3(u(rng), u(rng), u(rng)).normalized())));
-    b.linear_velocity = Vec3(u(rng), u(rng), u(rng)) * 4;
-    b.angular_velocity = Vec3(u(rng), u(rng), u(rng)) * 3;
-    return RigidBody::fromScene(b);
-}
-
 struct Momenta {
     Vec3 linear, angular;   // angular about the world origin
 };

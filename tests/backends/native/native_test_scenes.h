@@ -2,10 +2,13 @@
 // Scenes built in code for the native dynamics tests (closed-form answers need exact set-ups).
 #pragma once
 
+#include <cmath>
 #include <memory>
+#include <random>
 #include <string>
 
 #include "backend/native_backend.h"
+#include "dynamics/rigid_body.h"
 #include "vroc/core/mass_properties.h"
 #include "vroc/core/scene.h"
 
@@ -47,6 +50,22 @@ inline Pose at(const Vec3& p, const Quat& q = Quat::Identity()) {
     pose.position = p;
     pose.orientation = q;
     return pose;
+}
+
+/// A box of random size, mass, pose and velocity within a few metres of the origin.
+inline RigidBody randomBody(std::mt19937_64& rng, bool is_static = false) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Body b;
+    b.name = "b";
+    b.role = is_static ? BodyRole::Real : BodyRole::Virtual;
+    b.shape = Shape::box(Vec3(0.1 + 0.5 * std::abs(u(rng)), 0.1 + 0.5 * std::abs(u(rng)),
+                              0.1 + 0.5 * std::abs(u(rng))));
+    if (!is_static) b.mass_properties = massProperties(b.shape, 0.5 + 5 * std::abs(u(rng)));
+    b.pose = at(Vec3(u(rng), u(rng), u(rng)) * 3,
+                Quat(Eigen::AngleAxisd(3 * u(rng), Vec3(u(rng), u(rng), u(rng)).normalized())));
+    b.linear_velocity = Vec3(u(rng), u(rng), u(rng)) * 4;
+    b.angular_velocity = Vec3(u(rng), u(rng), u(rng)) * 3;
+    return RigidBody::fromScene(b);
 }
 
 /// A static floor box whose top face is the plane z = 0.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <deque>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
 
@@ -225,11 +226,56 @@ double relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint
 }
 
 // The minimum-norm inverse of an N x N normal block, N = 2..4, in the top-left corner of `inv`:
-// fixed-size, so the decomposition unrolls and allocates nothing.
+// fixed-size, so the decomposition unrolls and allocates nothing. The general path, for patches
+// whose points are (nearly) collinear or whose mass block is singular.
 template <int N>
 void pseudoInverseInto(const Eigen::Matrix4d& m, Eigen::Matrix4d& inv) {
     const Eigen::Matrix<double, N, N> block = m.topLeftCorner<N, N>();
     inv.topLeftCorner<N, N>() = Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix<double, N, N>>(block).pseudoInverse();
+}
+
+// The normal block of a patch in closed form. The points share the normal n, so a point's normal
+// relative velocity is an affine function of its place in the patch plane: with s_i = (p_i - c) x n
+// (c the centroid) and tau_i = (1, s_i.t1, s_i.t2), the block is M = T G T^T, T the N x 3 matrix of
+// rows tau_i and G the 3 x 3 mass of the patch's normal force and its two tilting moments
+// (G = sum over the free bodies of e1 e1^T / m + E^T I^-1 E, E = [(c - com) x n, t1, t2]).
+// For T of full column rank (three points not on a line) M^+ = P G^-1 P^T with P = T (T^T T)^-1:
+// two 3 x 3 inverses instead of an orthogonal decomposition. Returns false when the points are
+// nearly collinear or G is singular (the caller then decomposes M).
+bool patchBlockInverse(const std::vector<WorkBody>& wb, const std::vector<PointConstraint>& cs, const Patch& p,
+                       bool freeze_a, bool freeze_b, Eigen::Matrix4d& inv) {
+    const int n = p.count;
+    if (n < 3) return false;
+    const PointConstraint& f = p.friction;
+    Mat3 g = Mat3::Zero();
+    auto addBody = [&](const WorkBody& body, const Vec3& e) {
+        Mat3 basis;
+        basis << e, f.t1, f.t2;
+        g += basis.transpose() * body.inv_inertia * basis;
+        g(0, 0) += body.inv_mass;
+    };
+    if (!freeze_a) addBody(wb[f.a], f.ra_n);
+    if (!freeze_b) addBody(wb[f.b], f.rb_n);
+    Eigen::Matrix<double, 4, 3> t = Eigen::Matrix<double, 4, 3>::Zero();
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const Vec3 s = cs[static_cast<std::size_t>(p.first + i)].ra_n - f.ra_n;
+        t.row(i) << 1.0, s.dot(f.t1), s.dot(f.t2);
+        mean += t.row(i).tail<2>().transpose();
+    }
+    mean /= static_cast<double>(n);
+    // Collinearity, scale-free: the spread of the points in the plane must have two directions.
+    Eigen::Matrix2d spread = Eigen::Matrix2d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d d = t.row(i).tail<2>().transpose() - mean;
+        spread += d * d.transpose();
+    }
+    if (!(spread.determinant() > 1e-8 * spread.trace() * spread.trace())) return false;
+    const Eigen::LLT<Mat3> g_llt(g);
+    if (g_llt.info() != Eigen::Success) return false;
+    const Eigen::Matrix<double, 4, 3> tp = t * (t.transpose() * t).inverse();
+    inv = tp * g_llt.solve(Mat3::Identity()) * tp.transpose();
+    return inv.allFinite();
 }
 
 // All normal impulses of a patch at once: the minimum-norm increment that brings every point to
@@ -240,6 +286,10 @@ void pseudoInverseInto(const Eigen::Matrix4d& m, Eigen::Matrix4d& inv) {
 void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointConstraint>& cs,
                        Patch& p, bool freeze_a, bool freeze_b) {
     const int n = p.count;
+    Eigen::Matrix4d& inv = p.block[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))];
+    inv.setZero();
+    if (patchBlockInverse(wb, cs, p, freeze_a, freeze_b, inv)) return;
+    inv.setZero();
     const WorkBody& a = wb[p.friction.a];
     const WorkBody& b = wb[p.friction.b];
     Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
@@ -253,8 +303,6 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
             m(i, j) = ci.n.dot(du);
         }
     }
-    Eigen::Matrix4d& inv = p.block[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))];
-    inv.setZero();
     if (n == 2) pseudoInverseInto<2>(m, inv);
     if (n == 3) pseudoInverseInto<3>(m, inv);
     if (n == 4) pseudoInverseInto<4>(m, inv);
