@@ -153,7 +153,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     solver.correction_floor = -0.01 * cd;
     solver.correction_target = 0.25 * cd;
     const double resting_speed = scene_.gravity.norm() * h;
-    auto solveOne = [&](IslandSolve& is) {
+    auto solveOne = [&](IslandSolve& is, const ContactSolverSettings& settings) {
         is.local.reserve(is.bodies.size());
         for (int id : is.bodies) is.local.push_back(bodies_[static_cast<std::size_t>(id)]);
         auto localOf = [&](int id) {
@@ -168,12 +168,26 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             local_resting.push_back(resting[static_cast<std::size_t>(m)]);
         }
         is.collision = collisionPhase(is.local, is.solved, local_resting, resting_speed);
-        is.report = solveContactPhase(is.local, is.solved, h, scene_.gravity, solver, is.impulses);
+        is.report = solveContactPhase(is.local, is.solved, h, scene_.gravity, settings, is.impulses);
     };
-    if (work.size() > 1 && manifolds.size() >= 16)
-        partition_->run(work.size(), [&](std::size_t k, int) { solveOne(*work[k]); });
+    // A large island is solved alone, its sweeps shared by all workers (colour groups, see
+    // solveContactPhase); the other islands are shared out, one per worker. Same bits either way.
+    std::vector<IslandSolve*> shared, spread;
+    for (IslandSolve* is : work) (is->manifolds.size() >= kTeamManifolds ? shared : spread).push_back(is);
+    if (!shared.empty() && partition_->workers() > 1) {
+        ContactSolverSettings team = solver;
+        team.team_size = partition_->workers();
+        team.team = [&](const std::function<void(int)>& fn) {
+            partition_->run(static_cast<std::size_t>(team.team_size), [&](std::size_t k, int) { fn(static_cast<int>(k)); });
+        };
+        for (IslandSolve* is : shared) solveOne(*is, team);
+    } else {
+        for (IslandSolve* is : shared) solveOne(*is, solver);
+    }
+    if (spread.size() > 1 && manifolds.size() >= 16)
+        partition_->run(spread.size(), [&](std::size_t k, int) { solveOne(*spread[k], solver); });
     else
-        for (IslandSolve* is : work) solveOne(*is);
+        for (IslandSolve* is : spread) solveOne(*is, solver);
 
     // Results in island order: collision impulses change the bodies now, contact impulses become
     // drifts, manifolds go back to their caches.

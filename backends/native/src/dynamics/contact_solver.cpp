@@ -3,12 +3,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <deque>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
+
+#include "scheduling/spin_barrier.h"
 
 namespace vroc::native {
 namespace {
@@ -353,9 +356,13 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
     return true;
 }
 
-// Returns the largest relative-velocity change the patch's relaxations made [m/s].
+// Returns the largest relative-velocity change the patch's relaxations made [m/s]. A static body
+// is frozen too: it would only receive zero increments, and never writing it lets the patches of a
+// sweep group that share a static body run on different workers.
 double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p, bool freeze_a,
                   bool freeze_b) {
+    freeze_a = freeze_a || !(wb[p.friction.a].inv_mass > 0.0);
+    freeze_b = freeze_b || !(wb[p.friction.b].inv_mass > 0.0);
     double change = 0.0;
     if (!relaxNormalBlock(wb, cs, p, freeze_a, freeze_b, change)) {
         for (int i = p.first; i < p.first + p.count; ++i)
@@ -366,41 +373,138 @@ double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, P
     return std::max(change, relaxTorsion(wb, cs, p, freeze_a, freeze_b));
 }
 
-// The patches ordered by level (the higher of their bodies' levels; stable, so ties keep the
-// manifold order and the result stays a function of the input order alone).
-std::vector<Patch*> patchesByLevel(const std::vector<WorkBody>& wb, std::vector<Patch>& patches) {
-    std::vector<Patch*> order;
-    order.reserve(patches.size());
-    for (Patch& p : patches) order.push_back(&p);
-    auto level = [&](const Patch* p) { return std::max(wb[p->friction.a].level, wb[p->friction.b].level); };
-    std::stable_sort(order.begin(), order.end(), [&](const Patch* x, const Patch* y) { return level(x) < level(y); });
-    return order;
+int patchLevel(const std::vector<WorkBody>& wb, const Patch& p) {
+    return std::max(wb[p.friction.a].level, wb[p.friction.b].level);
 }
 
-int shockPropagation(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs,
-                     std::vector<Patch>& patches, int sweeps, double tolerance) {
-    // Bodies not connected to a static one keep level kUnreached: the Gauss-Seidel result stands.
-    // Patches are bucketed by level once (a level's sweeps touch only its own patches).
-    std::vector<std::vector<Patch*>> by_level;
-    for (auto& p : patches) {
-        const int level = std::max(wb[p.friction.a].level, wb[p.friction.b].level);
-        if (level >= kUnreached || level < 1) continue;
-        if (by_level.size() <= static_cast<std::size_t>(level)) by_level.resize(static_cast<std::size_t>(level) + 1);
-        by_level[static_cast<std::size_t>(level)].push_back(&p);
+// The order of the sweeps: patches by level (the higher of their bodies' levels). A large island's
+// levels are split in colour groups, no two patches of a group sharing a moving body (greedy
+// colouring in manifold order): a group's patches commute, so a team may relax them on any
+// workers. The order is a function of the input alone, never of the worker count. A small island
+// keeps each level in manifold order (one group, one worker): information crosses a row of a pile
+// in one sweep, where alternate colours need more.
+struct SweepSchedule {
+    struct Group {
+        std::size_t begin = 0, end = 0;   // range of `order`
+        int level = 0;
+        bool parallel = true;             // false: the colours ran out, one worker relaxes it
+    };
+    std::vector<Patch*> order;
+    std::vector<Group> groups;
+};
+
+constexpr int kColours = 64;   // one bit each in a body's colour mask
+
+// Greedy colours for the patches up[begin, end) of one level: the smallest colour that neither of a
+// patch's moving bodies has taken; kColours once they run out (that group runs on one worker).
+void colourLevel(const std::vector<WorkBody>& wb, const std::vector<Patch*>& up, std::size_t begin,
+                 std::size_t end, std::vector<std::uint64_t>& used, std::vector<int>& colour) {
+    auto moving = [&](int body) { return wb[static_cast<std::size_t>(body)].inv_mass > 0.0; };
+    for (std::size_t k = begin; k < end; ++k) {
+        const int a = up[k]->friction.a, b = up[k]->friction.b;
+        const std::uint64_t taken = (moving(a) ? used[static_cast<std::size_t>(a)] : 0) |
+                                    (moving(b) ? used[static_cast<std::size_t>(b)] : 0);
+        int c = 0;
+        while (c < kColours && (taken >> c & 1U) != 0) ++c;
+        colour[k] = c;
+        if (c == kColours) continue;
+        for (int body : {a, b})
+            if (moving(body)) used[static_cast<std::size_t>(body)] |= std::uint64_t{1} << c;
     }
-    int done = 0;
-    for (std::size_t level = 1; level < by_level.size(); ++level) {
-        for (int s = 0; s < sweeps; ++s) {
-            double change = 0.0;
-            for (Patch* p : by_level[level]) {
-                const int la = wb[p->friction.a].level, lb = wb[p->friction.b].level;
-                change = std::max(change, relaxPatch(wb, cs, *p, la < static_cast<int>(level), lb < static_cast<int>(level)));
-            }
-            ++done;
-            if (change <= tolerance) break;
+    for (std::size_t k = begin; k < end; ++k) {
+        used[static_cast<std::size_t>(up[k]->friction.a)] = 0;
+        used[static_cast<std::size_t>(up[k]->friction.b)] = 0;
+    }
+}
+
+SweepSchedule scheduleSweeps(const std::vector<WorkBody>& wb, std::vector<Patch>& patches, bool colour_levels) {
+    std::vector<Patch*> up;
+    up.reserve(patches.size());
+    for (Patch& p : patches) up.push_back(&p);
+    std::stable_sort(up.begin(), up.end(), [&](const Patch* x, const Patch* y) { return patchLevel(wb, *x) < patchLevel(wb, *y); });
+    std::vector<int> colour(up.size(), kColours);   // uncoloured: one sequential group per level
+    std::vector<std::uint64_t> used(colour_levels ? wb.size() : 0, 0);
+    SweepSchedule plan;
+    for (std::size_t begin = 0; begin < up.size();) {
+        const int level = patchLevel(wb, *up[begin]);
+        std::size_t end = begin;
+        while (end < up.size() && patchLevel(wb, *up[end]) == level) ++end;
+        if (colour_levels) colourLevel(wb, up, begin, end, used, colour);
+        std::vector<std::size_t> by_colour(end - begin);
+        for (std::size_t k = begin; k < end; ++k) by_colour[k - begin] = k;
+        std::stable_sort(by_colour.begin(), by_colour.end(), [&](std::size_t x, std::size_t y) { return colour[x] < colour[y]; });
+        for (std::size_t i = 0; i < by_colour.size(); ++i) {
+            const std::size_t k = by_colour[i];
+            if (i == 0 || colour[k] != colour[by_colour[i - 1]])
+                plan.groups.push_back({plan.order.size(), plan.order.size(), level, colour[k] < kColours});
+            plan.order.push_back(up[k]);
+            plan.groups.back().end = plan.order.size();
         }
+        begin = end;
     }
-    return done;
+    return plan;
+}
+
+// One worker's share of the sweeps (with one worker, all of them). Symmetric Gauss-Seidel in stack
+// order: sweeps alternate up and down the levels and the last one goes up, so a load crosses a
+// whole pyramid in one sweep pair instead of one level per sweep (on a base-20 pyramid this halves
+// the settling of the first, cold solve; on a base-30 one it is what holds it). Then shock
+// propagation: level by level from the ground up, each level's sweeps with the level below frozen.
+// Every group ends at a barrier; the per-patch changes feed the early stop identically on every worker.
+struct SweepCounts {
+    int sweeps = 0;
+    int shock_sweeps = 0;
+};
+
+SweepCounts runSweeps(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, const SweepSchedule& plan,
+                      int sweeps, int shock_sweeps, double tolerance, int worker, int workers,
+                      SpinBarrier* barrier, std::array<std::vector<double>, 2>& changes) {
+    SweepCounts counts;
+    const auto stride = static_cast<std::size_t>(workers);
+    auto relaxGroup = [&](const SweepSchedule::Group& g, std::vector<double>& change, bool shock) {
+        const std::size_t first = g.begin + (g.parallel ? static_cast<std::size_t>(worker) : 0);
+        const std::size_t step = g.parallel ? stride : 1;
+        if (g.parallel || worker == 0) {
+            for (std::size_t k = first; k < g.end; k += step) {
+                Patch& p = *plan.order[k];
+                const bool freeze_a = shock && wb[p.friction.a].level < g.level;
+                const bool freeze_b = shock && wb[p.friction.b].level < g.level;
+                change[k] = relaxPatch(wb, cs, p, freeze_a, freeze_b);
+            }
+        }
+        if (barrier != nullptr) barrier->arriveAndWait();
+    };
+    auto largest = [&](const std::vector<double>& change, std::size_t begin, std::size_t end) {
+        return begin < end ? *std::max_element(change.begin() + static_cast<std::ptrdiff_t>(begin),
+                                               change.begin() + static_cast<std::ptrdiff_t>(end))
+                           : 0.0;
+    };
+    for (int it = 0; it < sweeps; ++it) {
+        std::vector<double>& change = changes[static_cast<std::size_t>(it % 2)];
+        const bool upwards = (sweeps - 1 - it) % 2 == 0;
+        for (std::size_t k = 0; k < plan.groups.size(); ++k)
+            relaxGroup(plan.groups[upwards ? k : plan.groups.size() - 1 - k], change, false);
+        ++counts.sweeps;
+        if (largest(change, 0, plan.order.size()) <= tolerance) break;
+    }
+    if (shock_sweeps <= 0) return counts;
+    // Bodies not connected to a static one keep level kUnreached: the Gauss-Seidel result stands.
+    int parity = 0;
+    for (std::size_t first = 0; first < plan.groups.size();) {
+        const int level = plan.groups[first].level;
+        std::size_t last = first;
+        while (last < plan.groups.size() && plan.groups[last].level == level) ++last;
+        if (level >= 1 && level < kUnreached) {
+            for (int s = 0; s < shock_sweeps; ++s) {
+                std::vector<double>& change = changes[static_cast<std::size_t>(parity++ % 2)];
+                for (std::size_t g = first; g < last; ++g) relaxGroup(plan.groups[g], change, true);
+                ++counts.shock_sweeps;
+                if (largest(change, plan.groups[first].begin, plan.groups[last - 1].end) <= tolerance) break;
+            }
+        }
+        first = last;
+    }
+    return counts;
 }
 
 // Applies the previous solve's accumulated impulses (same points, same order when the pair's
@@ -570,23 +674,24 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
                 ++cold;
         const bool large_cold = manifolds.size() >= kLargeIsland && 2 * cold > manifolds.size();
         const int sweeps = large_cold ? settings.cold_factor * settings.iterations : settings.iterations;
-        // Symmetric Gauss-Seidel in stack order: sweeps alternate up and down the levels (graph
-        // distance from the static bodies) and the last one goes up. A load then crosses a whole
-        // pyramid in one sweep pair instead of one level per sweep; on a base-20 pyramid this halves
-        // the settling of the first (cold) solve, and on a base-30 one it is what holds it.
         assignLevels(wb, bodies, cs);
-        const std::vector<Patch*> up = patchesByLevel(wb, patches);
-        for (int it = 0; it < sweeps; ++it) {
-            const bool upwards = (sweeps - 1 - it) % 2 == 0;
-            double change = 0.0;
-            for (std::size_t k = 0; k < up.size(); ++k)
-                change = std::max(change, relaxPatch(wb, cs, *up[upwards ? k : up.size() - 1 - k], false, false));
-            ++report.sweeps;
-            if (change <= settings.tolerance) break;
+        const SweepSchedule plan = scheduleSweeps(wb, patches, manifolds.size() >= kTeamManifolds);
+        std::array<std::vector<double>, 2> changes{std::vector<double>(plan.order.size(), 0.0),
+                                                   std::vector<double>(plan.order.size(), 0.0)};
+        const int shock = settings.shock_iterations;
+        SweepCounts counts;
+        if (settings.team && settings.team_size > 1 && manifolds.size() >= kTeamManifolds) {
+            SpinBarrier barrier(settings.team_size);
+            settings.team([&](int worker) {
+                const SweepCounts mine = runSweeps(wb, cs, plan, sweeps, shock, settings.tolerance, worker,
+                                                   settings.team_size, &barrier, changes);
+                if (worker == 0) counts = mine;
+            });
+        } else {
+            counts = runSweeps(wb, cs, plan, sweeps, shock, settings.tolerance, 0, 1, nullptr, changes);
         }
-        if (settings.shock_iterations > 0) {
-            report.shock_sweeps = shockPropagation(wb, cs, patches, settings.shock_iterations, settings.tolerance);
-        }
+        report.sweeps = counts.sweeps;
+        report.shock_sweeps = counts.shock_sweeps;
     }
     // Impulses per body, recovered from the velocity change (covers every pass above).
     impulses.assign(bodies.size(), BodyImpulse{});

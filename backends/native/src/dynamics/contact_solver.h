@@ -9,6 +9,8 @@
 // kinetic energy and never teleports a body by more than the gap it repairs.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "dynamics/contact.h"
@@ -17,6 +19,10 @@
 namespace vroc::native {
 
 enum class ResponseModel { Vroc1995, NewtonCoulomb };
+
+/// Manifolds from which an island's sweeps are shared by a team (ContactSolverSettings::team);
+/// below it the barriers between colour groups cost more than the workers save.
+constexpr std::size_t kTeamManifolds = 64;
 
 struct ContactSolverSettings {
     int iterations = 10;          ///< Gauss-Seidel sweeps over all contact points
@@ -33,6 +39,12 @@ struct ContactSolverSettings {
     double correction_target = 0.0;
     double correction_rate = 0.8;
     int correction_iterations = 8;   ///< pseudo-velocity Gauss-Seidel sweeps (0 = off)
+    /// Optional workers for the sweeps of one large island: team(fn) calls fn(worker) for every
+    /// worker in [0, team_size) at once and returns when all have returned. Empty: the calling
+    /// thread alone. The sweeps visit patches in groups that share no moving body, in an order that
+    /// does not depend on the worker count, so the result is bit-identical with or without a team.
+    std::function<void(const std::function<void(int)>&)> team;
+    int team_size = 1;
 };
 
 /// Per body: the impulses the contact phase applies over the step.
