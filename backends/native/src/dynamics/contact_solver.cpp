@@ -394,6 +394,8 @@ struct SweepSchedule {
 };
 
 constexpr int kColours = 64;   // one bit each in a body's colour mask
+// Patches per worker below which a colour group is relaxed by one worker (a barrier costs more).
+constexpr std::size_t kMinSharePerWorker = 8;
 
 // Greedy colours for the patches up[begin, end) of one level: the smallest colour that neither of a
 // patch's moving bodies has taken; kColours once they run out (that group runs on one worker).
@@ -460,19 +462,31 @@ SweepCounts runSweeps(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
                       int sweeps, int shock_sweeps, double tolerance, int worker, int workers,
                       SpinBarrier* barrier, std::array<std::vector<double>, 2>& changes) {
     SweepCounts counts;
-    const auto stride = static_cast<std::size_t>(workers);
+    // A worker takes a contiguous share of a group: neighbouring patches, and the bodies they
+    // write, stay on one worker (interleaved shares would make the workers fight over cache lines).
+    // A group too small to share runs on worker 0; the workers meet only where the work passes
+    // from one worker to several or back (worker 0's consecutive groups need no barrier).
+    bool last_shared = false;
     auto relaxGroup = [&](const SweepSchedule::Group& g, std::vector<double>& change, bool shock) {
-        const std::size_t first = g.begin + (g.parallel ? static_cast<std::size_t>(worker) : 0);
-        const std::size_t step = g.parallel ? stride : 1;
-        if (g.parallel || worker == 0) {
-            for (std::size_t k = first; k < g.end; k += step) {
+        const std::size_t size = g.end - g.begin;
+        const bool shared = g.parallel && size >= kMinSharePerWorker * static_cast<std::size_t>(workers);
+        if (barrier != nullptr && (shared || last_shared)) barrier->arriveAndWait();
+        last_shared = shared;
+        const std::size_t parts = shared ? static_cast<std::size_t>(workers) : 1;
+        const auto w = static_cast<std::size_t>(worker);
+        if (w < parts) {
+            for (std::size_t k = g.begin + size * w / parts; k < g.begin + size * (w + 1) / parts; ++k) {
                 Patch& p = *plan.order[k];
                 const bool freeze_a = shock && wb[p.friction.a].level < g.level;
                 const bool freeze_b = shock && wb[p.friction.b].level < g.level;
                 change[k] = relaxPatch(wb, cs, p, freeze_a, freeze_b);
             }
         }
+    };
+    // Every worker reads all changes for the early stop: they must all have been written.
+    auto settle = [&] {
         if (barrier != nullptr) barrier->arriveAndWait();
+        last_shared = false;
     };
     auto largest = [&](const std::vector<double>& change, std::size_t begin, std::size_t end) {
         return begin < end ? *std::max_element(change.begin() + static_cast<std::ptrdiff_t>(begin),
@@ -484,6 +498,7 @@ SweepCounts runSweeps(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
         const bool upwards = (sweeps - 1 - it) % 2 == 0;
         for (std::size_t k = 0; k < plan.groups.size(); ++k)
             relaxGroup(plan.groups[upwards ? k : plan.groups.size() - 1 - k], change, false);
+        settle();
         ++counts.sweeps;
         if (largest(change, 0, plan.order.size()) <= tolerance) break;
     }
@@ -498,6 +513,7 @@ SweepCounts runSweeps(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
             for (int s = 0; s < shock_sweeps; ++s) {
                 std::vector<double>& change = changes[static_cast<std::size_t>(parity++ % 2)];
                 for (std::size_t g = first; g < last; ++g) relaxGroup(plan.groups[g], change, true);
+                settle();
                 ++counts.shock_sweeps;
                 if (largest(change, plan.groups[first].begin, plan.groups[last - 1].end) <= tolerance) break;
             }
