@@ -292,9 +292,19 @@ Vec3 JsonReader::vec3() const {
 
 Quat JsonReader::quaternion() const {
     requireType(value_->is_array() && value_->size() == 4, "a quaternion [x, y, z, w]");
-    const double x = element(0).number(), y = element(1).number(), z = element(2).number(),
-                 w = element(3).number();
-    const double norm = std::sqrt(x * x + y * y + z * z + w * w);
+    double x = element(0).number(), y = element(1).number(), z = element(2).number(), w = element(3).number();
+    double norm = std::sqrt(x * x + y * y + z * z + w * w);
+    if (!std::isfinite(norm)) {
+        // A component near the top of the double range: the squares overflowed, and dividing by an
+        // infinite norm would give the zero quaternion. Scaled by the largest component first, the
+        // norm lies in [1, 2].
+        const double scale = std::max({std::abs(x), std::abs(y), std::abs(z), std::abs(w)});
+        x /= scale;
+        y /= scale;
+        z /= scale;
+        w /= scale;
+        norm = std::sqrt(x * x + y * y + z * z + w * w);
+    }
     if (!(norm >= 1e-9))
         fail(fmt::format("expected a non-zero quaternion [x, y, z, w] (|q| >= 1e-9), got |q| = {}", norm));
     return Quat(w / norm, x / norm, y / norm, z / norm);   // Eigen's constructor order is (w, x, y, z)

@@ -154,6 +154,18 @@ TEST(SceneLoader, QuaternionIsReadXYZWAndNormalised) {
     EXPECT_DOUBLE_EQ(n.x(), 0.0);
     EXPECT_DOUBLE_EQ(n.y(), 0.6);
     EXPECT_DOUBLE_EQ(n.z(), 0.0);
+    // Components near the top of the double range normalise too (their squares overflow): the
+    // same rotation as [0, 1, 0, 0] and as [1, 1, 1, 1] / 2, never the zero quaternion.
+    auto load = [&](const std::string& q) {
+        return loadBodies(R"({"name": "q", "role": "real", "material": "steel", "position": [0, 0, 0],
+            "shape": {"sphere": {"radius": 1}}, "orientation": )" + q + "}").bodies[0].pose.orientation;
+    };
+    const Quat big = load("[0, 1e308, 0, 1]");
+    EXPECT_DOUBLE_EQ(big.y(), 1.0);
+    EXPECT_NEAR(big.w(), 0.0, 1e-300);
+    EXPECT_DOUBLE_EQ(big.x(), 0.0);
+    const Quat all = load("[1.5e308, 1.5e308, 1.5e308, 1.5e308]");
+    for (double c : {all.x(), all.y(), all.z(), all.w()}) EXPECT_DOUBLE_EQ(c, 0.5);
 }
 
 TEST(SceneLoader, InertiaOverrideDiagonalAndMatrix) {
