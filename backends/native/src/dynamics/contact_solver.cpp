@@ -290,7 +290,6 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
                        Patch& p, bool freeze_a, bool freeze_b) {
     const int n = p.count;
     Eigen::Matrix4d& inv = p.block[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))];
-    inv.setZero();
     if (patchBlockInverse(wb, cs, p, freeze_a, freeze_b, inv)) return;
     inv.setZero();
     const WorkBody& a = wb[p.friction.a];
@@ -387,7 +386,7 @@ struct SweepSchedule {
     struct Group {
         std::size_t begin = 0, end = 0;   // range of `order`
         int level = 0;
-        bool parallel = true;             // false: the colours ran out, one worker relaxes it
+        bool parallel = true;             // false: uncoloured (a small island) or out of colours: one worker
     };
     std::vector<Patch*> order;
     std::vector<Group> groups;
@@ -452,7 +451,8 @@ SweepSchedule scheduleSweeps(const std::vector<WorkBody>& wb, std::vector<Patch>
 // whole pyramid in one sweep pair instead of one level per sweep (on a base-20 pyramid this halves
 // the settling of the first, cold solve; on a base-30 one it is what holds it). Then shock
 // propagation: level by level from the ground up, each level's sweeps with the level below frozen.
-// Every group ends at a barrier; the per-patch changes feed the early stop identically on every worker.
+// With a team, every worker runs this with its own index; the per-patch changes feed the early
+// stop identically on every worker.
 struct SweepCounts {
     int sweeps = 0;
     int shock_sweeps = 0;
