@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 PACKAGES := cmake ninja-build g++ make pkg-config git ca-certificates \
   libeigen3-dev libbullet-dev libode-dev libmujoco-dev libccd-dev libassimp-dev libqhull-dev \
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libfmt-dev libopenmpi-dev openmpi-bin \
-  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium
+  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium libsndfile1-dev libspnav-dev libx11-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps configure build demo test test-long bench bench-dense bench-scale clean

@@ -70,6 +70,12 @@ std::string toJson(const RunRecord& r) {
                    {"compiler", r.build.compiler}, {"flags", r.build.flags}}},
         {"command_line", r.command_line},
     };
+    if (!r.outputs.empty()) {
+        json outputs = json::object();
+        for (const auto& [role, output] : r.outputs)
+            outputs[role] = {{"file", output.file}, {"description", output.description}};
+        j["outputs"] = outputs;
+    }
     // nlohmann prints doubles round-trip exact (shortest representation that reads back equal).
     return j.dump(2) + "\n";
 }

@@ -98,12 +98,15 @@ void simulate(const RunRequest& request, Backend& backend, RunFiles& files, RunR
 
     StepTimeSampler step_us;
     for (std::int64_t frame = 1; frame <= record.steps; ++frame) {
+        if (request.before_frame) request.before_frame(backend, backend.time());
         const auto start = Clock::now();
         backend.stepFrame(request.frame_dt);
         step_us.add(secondsSince(start) * 1e6);
         readStates(backend, states);
         trajectory.writeFrame(backend.time(), states);
-        events.write(backend.takeEvents());
+        const std::vector<CollisionEvent> frame_events = backend.takeEvents();
+        events.write(frame_events);
+        if (request.on_events) request.on_events(frame_events);
         if (request.progress && !request.progress(frame, record.steps))
             throw RunError("interrupted at t = " + number(backend.time()) + " s; no run.json written");
     }
@@ -168,6 +171,7 @@ RunRecord recordRun(const RunRequest& request) {
         simulate(request, *backend, files, record);
         files.trajectory.commit();
         files.events.commit();
+        if (request.finish_outputs) request.finish_outputs(record);
         record.wall_time_s = secondsSince(wall_start);
         files.run_json.write(toJson(record));
         files.run_json.commit();   // last: from here on the directory is a complete run

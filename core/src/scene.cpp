@@ -18,7 +18,7 @@ int Scene::findBody(const std::string& body_name) const {
 
 std::size_t Scene::virtualBodyCount() const {
     return static_cast<std::size_t>(
-        std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return !b.isStatic(); }));
+        std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return b.isDynamic(); }));
 }
 
 }  // namespace vroc

@@ -2,6 +2,7 @@
 // Strict loader for `vroc-scene/1` (docs/scene-format.md): top level, materials and bodies.
 #include "vroc/core/scene_loader.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -28,8 +29,9 @@ std::vector<Material> readMaterials(const JsonReader& r) {
     for (const std::string& name : r.keys()) {
         const JsonReader m = r.at(name);
         if (name.empty()) m.fail("expected a non-empty material name");
-        m.requireObject({"restitution", "friction"});
+        m.requireObject({"restitution", "friction", "sound"});
         materials.push_back({name, m.at("restitution").inRange(0.0, 1.0, ""), m.at("friction").nonNegative("")});
+        if (auto sound = m.find("sound")) materials.back().sound = readMaterialSound(*sound);
     }
     if (materials.empty()) r.fail("expected at least one material");
     return materials;
@@ -48,10 +50,38 @@ int findMaterial(const JsonReader& r, const std::vector<Material>& materials) {
 
 // Real bodies are the static model of the real world: they take no mass, inertia or velocity.
 void rejectDynamicKeys(const JsonReader& body) {
-    for (const char* key : {"mass", "inertia", "linear_velocity", "angular_velocity"})
+    for (const char* key : {"mass", "inertia", "linear_velocity", "angular_velocity", "tracking"})
         if (auto v = body.find(key))
             v->fail(fmt::format("`{}` is not allowed on a real body (real bodies are static: infinite mass, "
-                                "zero velocity); remove it or make the body \"virtual\"", key));
+                                "zero velocity); remove it or make the body \"virtual\" or \"tracked\"", key));
+}
+
+void rejectMassKeys(const JsonReader& body) {
+    for (const char* key : {"mass", "inertia"})
+        if (auto v = body.find(key))
+            v->fail(fmt::format("`{}` is not allowed on a tracked body (collisions never move it: infinite "
+                                "mass); remove it or make the body \"virtual\"", key));
+}
+
+TrackingSource readTracking(const JsonReader& r) {
+    r.requireObject({"device", "sensor"});
+    TrackingSource source;
+    source.device = r.at("device").string();
+    if (source.device.empty()) r.at("device").fail("expected a plugin spec such as \"udp:port=4242\"");
+    if (auto s = r.find("sensor")) {
+        const double sensor = s->inRange(0, 1e6, "");
+        if (sensor != std::floor(sensor)) s->fail(fmt::format("expected an integer sensor index, got {}", s->describe()));
+        source.sensor = static_cast<int>(sensor);
+    }
+    return source;
+}
+
+BodyRole readRole(const JsonReader& role) {
+    const std::string name = role.string();
+    if (name == "real") return BodyRole::Real;
+    if (name == "virtual") return BodyRole::Virtual;
+    if (name == "tracked") return BodyRole::Tracked;
+    role.fail(fmt::format("expected \"real\", \"virtual\" or \"tracked\", got \"{}\"", name));
 }
 
 MassProperties readMassProperties(const JsonReader& body, const Shape& shape) {
@@ -68,15 +98,11 @@ MassProperties readMassProperties(const JsonReader& body, const Shape& shape) {
 
 Body readBody(const JsonReader& r, const std::vector<Material>& materials, const std::filesystem::path& base_dir) {
     r.requireObject({"name", "role", "material", "mass", "shape", "position", "orientation", "linear_velocity",
-                     "angular_velocity", "inertia"});
+                     "angular_velocity", "inertia", "tracking"});
     Body body;
     body.name = r.at("name").string();
     if (body.name.empty()) r.at("name").fail("expected a non-empty body name");
-    const JsonReader role = r.at("role");
-    const std::string role_name = role.string();
-    if (role_name != "real" && role_name != "virtual")
-        role.fail(fmt::format("expected \"real\" or \"virtual\", got \"{}\"", role_name));
-    body.role = role_name == "real" ? BodyRole::Real : BodyRole::Virtual;
+    body.role = readRole(r.at("role"));
     body.material = findMaterial(r.at("material"), materials);
     body.shape = readShape(r.at("shape"), base_dir);
     body.pose.position = r.at("position").vec3();
@@ -85,7 +111,14 @@ Body readBody(const JsonReader& r, const std::vector<Material>& materials, const
         rejectDynamicKeys(r);
         return body;   // mass properties stay zero: static, infinite mass
     }
-    body.mass_properties = readMassProperties(r, body.shape);
+    if (body.role == BodyRole::Tracked) {
+        rejectMassKeys(r);
+        if (auto t = r.find("tracking")) body.tracking = readTracking(*t);
+    } else {
+        if (auto t = r.find("tracking"))
+            t->fail("`tracking` is only allowed on a tracked body; make the body \"tracked\" or remove it");
+        body.mass_properties = readMassProperties(r, body.shape);
+    }
     if (auto v = r.find("linear_velocity")) body.linear_velocity = v->vec3();
     if (auto w = r.find("angular_velocity")) body.angular_velocity = w->vec3();
     return body;

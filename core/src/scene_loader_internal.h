@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "json_reader.h"
+#include "vroc/core/scene.h"
 #include "vroc/core/shape.h"
 
 namespace vroc {
@@ -17,5 +18,9 @@ Shape readShape(const JsonReader& shape, const std::filesystem::path& base_dir);
 /// positive-definite matrix; either way the principal moments must satisfy the triangle
 /// inequality (I1 <= I2 + I3), as every real rigid body does. [kg m^2], about the COM.
 Mat3 readInertia(const JsonReader& inertia);
+
+/// Reads a material's `sound` object: modes_hz, decay_per_s and gains, equal lengths
+/// (scene_loader_sound.cpp; limits in MaterialSound).
+MaterialSound readMaterialSound(const JsonReader& sound);
 
 }  // namespace vroc

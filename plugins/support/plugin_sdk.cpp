@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "plugin_sdk.h"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstring>
 
 namespace vroc::plugin_sdk {
@@ -10,6 +12,7 @@ namespace {
 // Set once by negotiate; the host keeps `services` alive while the library is loaded.
 std::atomic<const PluginDefinition*> g_definition{nullptr};
 std::atomic<const VrocHostServices*> g_services{nullptr};
+std::atomic<uint32_t> g_abi_version{VROC_PLUGIN_ABI_VERSION};  // as negotiated last
 
 std::mutex g_create_error_mutex;
 std::string g_create_error;  // last_error(NULL): why the last create failed
@@ -28,6 +31,7 @@ int32_t apiDescribe(uint32_t index, VrocDeviceDesc* out) noexcept {
     if (out->struct_type != VROC_STRUCT_DEVICE_DESC || out->struct_size < sizeof(VrocDeviceDesc)) return VROC_ERROR_ABI;
     try {
         def->describe(index, *out);
+        if (g_abi_version.load() < 2) out->caps &= ~VROC_CAP_FORCE_OUTPUT;  // no send_force in ABI 1
         return VROC_OK;
     } catch (...) {
         return VROC_ERROR_INTERNAL;
@@ -99,6 +103,18 @@ int32_t apiGetControls(VrocDeviceHandle h, int64_t t, VrocControlState* out) noe
     return guarded(h, [&](Device& d) { return d.controls(t, *out); });
 }
 
+int32_t apiSendForce(VrocDeviceHandle h, const VrocForceCommand* command) noexcept {
+    if (!command) return VROC_ERROR_INVALID_ARGUMENT;
+    if (command->struct_type != VROC_STRUCT_FORCE_COMMAND || command->struct_size < sizeof(VrocForceCommand))
+        return VROC_ERROR_ABI;
+    return guarded(h, [&](Device& d) {
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(command->force[i]) || !std::isfinite(command->torque[i]))
+                return d.setError(VROC_ERROR_INVALID_ARGUMENT, "force command with a non-finite value");
+        return d.force(*command);
+    });
+}
+
 int32_t apiLastError(VrocDeviceHandle h, char* buffer, uint64_t size) noexcept {
     try {
         if (!h) {
@@ -112,15 +128,20 @@ int32_t apiLastError(VrocDeviceHandle h, char* buffer, uint64_t size) noexcept {
 }
 
 const VrocDeviceApi kApi = {
-    VROC_STRUCT_DEVICE_API, 1, sizeof(VrocDeviceApi),
+    VROC_STRUCT_DEVICE_API, 2, sizeof(VrocDeviceApi),
     apiDescribe, apiCreate, apiStart, apiStop, apiDestroy, apiGetPose, apiGetControls, apiLastError,
-    nullptr,  // set_force: no built-in plugin drives force output
+    nullptr,  // set_force: ABI 1 only, never called by a VROC host
+    apiSendForce,
 };
 
 }  // namespace
 
 int32_t Device::controls(int64_t, VrocControlState&) {
     return setError(VROC_ERROR_UNSUPPORTED, "this device has no buttons or axes");
+}
+
+int32_t Device::force(const VrocForceCommand&) {
+    return setError(VROC_ERROR_UNSUPPORTED, "this device takes no forces");
 }
 
 int32_t Device::setError(int32_t code, const std::string& text) {
@@ -138,12 +159,15 @@ int32_t negotiate(const PluginDefinition& definition, const VrocHostInfo* host, 
     if (!host || !out) return VROC_ERROR_INVALID_ARGUMENT;
     if (host->struct_type != VROC_STRUCT_HOST_INFO || host->struct_size < sizeof(VrocHostInfo)) return VROC_ERROR_ABI;
     if (out->struct_type != VROC_STRUCT_PLUGIN_INFO || out->struct_size < sizeof(VrocPluginInfo)) return VROC_ERROR_ABI;
-    if (host->abi_min > VROC_PLUGIN_ABI_VERSION || host->abi_max < VROC_PLUGIN_ABI_VERSION) return VROC_ERROR_ABI;
+    // The highest version both know; ABI 1 is the oldest this SDK still speaks.
+    const uint32_t chosen = std::min<uint32_t>(host->abi_max, VROC_PLUGIN_ABI_VERSION);
+    if (chosen < host->abi_min || chosen < VROC_PLUGIN_ABI_VERSION_MIN) return VROC_ERROR_ABI;
     const VrocHostServices* services = host->services;
     if (services && (services->struct_type != VROC_STRUCT_HOST_SERVICES || services->struct_size < sizeof(VrocHostServices)))
         services = nullptr;  // run without services rather than read past the host's struct
     g_services.store(services);
     g_definition.store(&definition);
+    g_abi_version.store(chosen);
 
     uint64_t caps = 0;
     for (uint32_t i = 0; i < definition.device_count; ++i) {
@@ -153,7 +177,7 @@ int32_t negotiate(const PluginDefinition& definition, const VrocHostInfo* host, 
         desc.struct_size = sizeof desc;
         if (apiDescribe(i, &desc) == VROC_OK) caps |= desc.caps;
     }
-    out->abi_version = VROC_PLUGIN_ABI_VERSION;
+    out->abi_version = chosen;
     out->device_count = definition.device_count;
     out->name = definition.name;
     out->version = definition.version;

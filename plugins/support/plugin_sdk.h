@@ -25,6 +25,9 @@ public:
     /// `out` has a valid v1 header; fill time_ns, flags, sequence, pose and velocities.
     virtual int32_t pose(uint32_t sensor, int64_t at_time_ns, VrocPoseSample& out) = 0;
     virtual int32_t controls(int64_t at_time_ns, VrocControlState& out);
+    /// ABI 2 output: one force command, header checked and every value finite (the SDK checks both
+    /// before calling). Devices that declare VROC_CAP_FORCE_OUTPUT override it.
+    virtual int32_t force(const VrocForceCommand& command);
 
     /// Records the error text for last_error and returns `code` (for `return setError(...)`).
     int32_t setError(int32_t code, const std::string& text);
@@ -46,7 +49,10 @@ struct PluginDefinition {
     std::unique_ptr<Device> (*create)(uint32_t index, Options& options);
 };
 
-/// The negotiate implementation behind VROC_DEFINE_PLUGIN.
+/// The negotiate implementation behind VROC_DEFINE_PLUGIN. Chooses the highest ABI both sides
+/// know (2 with a current host). With an ABI-1 host the same table is offered as ABI 1 and
+/// describe() drops VROC_CAP_FORCE_OUTPUT, since ABI 1 has no send_force (the SDK leaves the
+/// ABI-1 set_force NULL).
 int32_t negotiate(const PluginDefinition& definition, const VrocHostInfo* host, VrocPluginInfo* out) noexcept;
 
 /// Host services (no-ops before negotiation).

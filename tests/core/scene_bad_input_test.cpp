@@ -177,6 +177,24 @@ TEST(SceneBadInput, MassOnARealBody) {
                 {"bodies[0].linear_velocity: `linear_velocity` is not allowed on a real body"});
 }
 
+TEST(SceneBadInput, TrackedBodyTakesNoMassAndOnlyItHasTracking) {
+    const std::string pad = R"({"name": "pad", "role": "tracked", "material": "rubber", "position": [0, 0, 0],
+                              "shape": {"box": {"half_extents": [1, 1, 1]}})";
+    expectError(sceneWith(pad + R"(, "mass": 2})"), {"bodies[0].mass: `mass` is not allowed on a tracked body"});
+    expectError(sceneWith(pad + R"(, "inertia": [1, 1, 1]})"), {"bodies[0].inertia: `inertia` is not allowed on a tracked body"});
+    expectError(sceneWith(pad + R"(, "tracking": {"device": ""}})"), {"bodies[0].tracking.device: expected a plugin spec"});
+    expectError(sceneWith(pad + R"(, "tracking": {"device": "udp", "sensor": 1.5}})"),
+                {"bodies[0].tracking.sensor: expected an integer sensor index, got"});
+    expectError(sceneWith(pad + R"(, "tracking": {"device": "udp", "sensor": -1}})"), {"bodies[0].tracking.sensor:"});
+    expectError(sceneWith(pad + R"(, "tracking": {"device": "udp", "sesnor": 1}})"),
+                {"bodies[0].tracking: unknown key `sesnor`; did you mean `sensor`?"});
+    expectError(sceneWith(R"({"name": "floor", "role": "real", "material": "rubber", "position": [0, 0, 0],
+                              "shape": {"box": {"half_extents": [1, 1, 1]}}, "tracking": {"device": "udp"}})"),
+                {"bodies[0].tracking: `tracking` is not allowed on a real body"});
+    expectError(withBall(R"(, "tracking": {"device": "udp"})"),
+                {"bodies[1].tracking: `tracking` is only allowed on a tracked body"});
+}
+
 TEST(SceneBadInput, NonPositiveRadiusOrExtent) {
     expectError(withBall("", R"({"sphere": {"radius": 0}})"), {"bodies[1].shape.sphere.radius: expected a number > 0 [m], got 0"});
     expectError(withBall("", R"({"sphere": {"radius": -0.1}})"), {"bodies[1].shape.sphere.radius: expected a number > 0 [m], got -0.1"});
@@ -256,7 +274,7 @@ TEST(SceneBadInput, ShapeMustBeExactlyOneKind) {
 TEST(SceneBadInput, BadRoleAndEmptyLists) {
     expectError(sceneWith(R"({"name": "floor", "role": "ghost", "material": "rubber", "position": [0, 0, 0],
                               "shape": {"box": {"half_extents": [1, 1, 1]}}})"),
-                {"bodies[0].role: expected \"real\" or \"virtual\", got \"ghost\""});
+                {"bodies[0].role: expected \"real\", \"virtual\" or \"tracked\", got \"ghost\""});
     expectError(sceneWith(""), {": bodies: expected at least one body"});
     expectError(R"({"format": "vroc-scene/1", "name": "t", "materials": {}, "bodies": [1]})",
                 {": materials: expected at least one material"});

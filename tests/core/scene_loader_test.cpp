@@ -127,6 +127,29 @@ TEST(SceneLoader, RealBodyIsStaticWithZeroMass) {
     EXPECT_EQ(s.virtualBodyCount(), 0u);
 }
 
+TEST(SceneLoader, TrackedBodyMovesWithInfiniteMassAndNamesItsDevice) {
+    const Scene s = loadBodies(R"({"name": "pad", "role": "tracked", "material": "steel",
+        "position": [0, 0, 1], "linear_velocity": [1, 0, 0], "angular_velocity": [0, 0, 2],
+        "shape": {"box": {"half_extents": [0.1, 0.2, 0.01]}},
+        "tracking": {"device": "udp:port=4242", "sensor": 3}})");
+    const Body& b = s.bodies[0];
+    EXPECT_EQ(b.role, BodyRole::Tracked);
+    EXPECT_TRUE(b.isTracked());
+    EXPECT_FALSE(b.isStatic());
+    EXPECT_FALSE(b.isDynamic());
+    EXPECT_EQ(b.mass_properties.mass, 0.0);
+    EXPECT_EQ(b.linear_velocity, Vec3(1, 0, 0));
+    EXPECT_EQ(b.angular_velocity, Vec3(0, 0, 2));
+    EXPECT_EQ(b.tracking.device, "udp:port=4242");
+    EXPECT_EQ(b.tracking.sensor, 3);
+    EXPECT_EQ(s.virtualBodyCount(), 0u);
+    // Without `tracking`: no device, sensor 0 (it moves at its file velocities).
+    const Scene t = loadBodies(R"({"name": "pad", "role": "tracked", "material": "steel",
+        "position": [0, 0, 1], "shape": {"sphere": {"radius": 0.1}}})");
+    EXPECT_TRUE(t.bodies[0].tracking.device.empty());
+    EXPECT_EQ(t.bodies[0].tracking.sensor, 0);
+}
+
 TEST(SceneLoader, BoxInertiaIsTheClosedForm) {
     const Scene s = loadBodies(R"({"name": "b", "role": "virtual", "material": "steel", "mass": 6,
         "position": [0, 0, 0], "shape": {"box": {"half_extents": [0.5, 1, 1.5]}}})");

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `vroc play`'s loop end to end on the staircase: frames and play.json written, the analytic
-// throw grabs ball_0 and throws it at the device's speed, and the registration statistics of the
-// scripted head follow its closed-form bound (error <= yaw rate x latency, prediction helps).
+// throw grabs ball_0 (through the virtual coupling) and throws it at the speed of its point on the
+// swinging arm, and the registration statistics of the scripted head follow its closed-form bound
+// (error <= yaw rate x latency, prediction helps).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "staircase_geometry.h"
 #include "test_backends.h"
 #include "vroc/play/play_loop.h"
 #include "vroc/play/scripted_head.h"
@@ -24,8 +26,17 @@ TEST(PlayLoop, StaircaseThrowFramesAndReport) {
     PlayOptions o;
     o.scene_path = std::string(VROC_SOURCE_DIR) + "/scenes/staircase.json";
     o.backend = "bullet";
-    // ball_0 starts at (0.10, -0.30, 1.25): the throw arc's hand starts 0.6 m behind its centre.
-    o.device_spec = "analytic:motion=throw,x=0.7,y=-0.3,z=1.25,radius=0.6,throw_speed=3";
+    // ball_0 starts at (0.10, -0.30, 1.25). The arm (shoulder (0.3, -0.3, 1.44), 0.2 m) starts
+    // pointing back with the hand 0.19 m above the ball, so the held ball swings on a circle of
+    // R = |(-0.2, -0.19)| = 0.276 m about the shoulder, clear of the top step (a held body is stopped
+    // by the real model now, so the arc must miss it).
+    o.device_spec = "analytic:motion=throw,x=0.3,y=-0.3,z=1.44,radius=0.2,throw_speed=2";
+    const int ball = 2;   // scene index of ball_0 (after floor and staircase)
+    std::vector<double> clearance;   // ball_0's distance from the staircase at each frame end
+    o.on_frame = [&](int frame, const Backend& backend) {
+        EXPECT_EQ(frame, static_cast<int>(clearance.size()));
+        clearance.push_back(test::staircaseDistance(backend.bodyState(ball).pose.position) - 0.05);
+    };
     o.frames = 60;
     o.eye_width = 320;
     o.eye_height = 240;
@@ -38,7 +49,18 @@ TEST(PlayLoop, StaircaseThrowFramesAndReport) {
     EXPECT_EQ(r.body_names[r.throws[0].body], "ball_0");
     const ThrowRecord& t = r.throws[0];
     ASSERT_TRUE(t.device_velocity_known);
-    EXPECT_LT((t.linear_velocity - t.device_linear_velocity).norm(), 0.03 * t.device_linear_velocity.norm());
+    // The ball's point on the arm moves at |w| R. The coupling keeps the speed within 10 % on this
+    // steadily accelerating arc (measured 1.3 %) while its direction lags a few degrees; the coupling
+    // itself is checked against closed forms in grab_coupling_test and grab_throw_test.
+    const double arm_speed = t.device_angular_velocity.norm() * std::hypot(0.2, 0.19);
+    EXPECT_NEAR(t.linear_velocity.norm(), arm_speed, 0.1 * arm_speed);
+    // Held, the ball never touched the stairs (the test's premise), and it never sank into them after.
+    ASSERT_EQ(clearance.size(), 60u);
+    const int release_frame = static_cast<int>(std::lround(t.time / r.frame_dt));
+    for (int i = 0; i < release_frame; ++i) EXPECT_GT(clearance[i], 0.005) << "frame " << i;
+    for (double c : clearance) EXPECT_GT(c, -0.002);
+    EXPECT_FALSE(r.hand_accepts_force);   // the analytic plugin takes no force
+    EXPECT_EQ(r.forces_sent, 0);
 
     // Registration: the scripted head's peak yaw rate bounds the error of the delayed pose
     // (rate x 50 ms latency + the 60 Hz tracker grid), and both predictors do better.
@@ -64,6 +86,9 @@ TEST(PlayLoop, StaircaseThrowFramesAndReport) {
     EXPECT_EQ(j["throws"][0]["body"], "ball_0");
     EXPECT_GT(j["rates_fps"]["render"].get<double>(), 0.0);
     EXPECT_DOUBLE_EQ(j["latency_model_ms"]["total"].get<double>(), 50.0);
+    EXPECT_EQ(j["force_output"]["forces_sent"], 0);
+    EXPECT_EQ(j["realtime"]["enabled"], false);
+    EXPECT_EQ(j["device_samples"]["hand"]["frames_with_sample"], 60);
     std::filesystem::remove_all(out);
 }
 

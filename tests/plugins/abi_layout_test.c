@@ -19,6 +19,7 @@ HEADER_CHECK(VrocDeviceApi);
 HEADER_CHECK(VrocDeviceDesc);
 HEADER_CHECK(VrocPoseSample);
 HEADER_CHECK(VrocControlState);
+HEADER_CHECK(VrocForceCommand);
 
 /* Pointer-free structs: the same on every platform with 8-byte-aligned int64/double. */
 _Static_assert(sizeof(VrocPoseSample) == 144, "VrocPoseSample size");
@@ -34,6 +35,12 @@ _Static_assert(sizeof(VrocControlState) == 104, "VrocControlState size");
 _Static_assert(offsetof(VrocControlState, buttons) == 24, "buttons");
 _Static_assert(offsetof(VrocControlState, axis_count) == 32, "axis_count");
 _Static_assert(offsetof(VrocControlState, axes) == 40, "axes");
+_Static_assert(sizeof(VrocForceCommand) == 80, "VrocForceCommand size");
+_Static_assert(offsetof(VrocForceCommand, time_ns) == 16, "force time_ns");
+_Static_assert(offsetof(VrocForceCommand, sensor) == 24, "force sensor");
+_Static_assert(offsetof(VrocForceCommand, flags) == 28, "force flags");
+_Static_assert(offsetof(VrocForceCommand, force) == 32, "force");
+_Static_assert(offsetof(VrocForceCommand, torque) == 56, "torque");
 
 #if UINTPTR_MAX == 0xFFFFFFFFFFFFFFFFu /* LP64 */
 _Static_assert(sizeof(VrocHostServices) == 48, "VrocHostServices size");
@@ -44,17 +51,21 @@ _Static_assert(sizeof(VrocPluginInfo) == 64, "VrocPluginInfo size");
 _Static_assert(offsetof(VrocPluginInfo, abi_version) == 16, "abi_version");
 _Static_assert(offsetof(VrocPluginInfo, capabilities) == 48, "capabilities");
 _Static_assert(offsetof(VrocPluginInfo, api) == 56, "api");
-_Static_assert(sizeof(VrocDeviceApi) == 88, "VrocDeviceApi size");
+/* ABI 2 appended send_force; everything before it keeps its ABI-1 offset. */
+_Static_assert(sizeof(VrocDeviceApi) == 96, "VrocDeviceApi size");
 _Static_assert(offsetof(VrocDeviceApi, describe) == 16, "describe");
 _Static_assert(offsetof(VrocDeviceApi, get_pose) == 56, "get_pose");
 _Static_assert(offsetof(VrocDeviceApi, set_force) == 80, "set_force");
+_Static_assert(offsetof(VrocDeviceApi, send_force) == 88, "send_force");
+_Static_assert(VROC_DEVICE_API_SIZE_V1 == 88, "ABI-1 table size");
+_Static_assert(VROC_DEVICE_API_SIZE_V2 == 96, "ABI-2 table size");
 _Static_assert(sizeof(VrocDeviceDesc) == 72, "VrocDeviceDesc size");
 _Static_assert(offsetof(VrocDeviceDesc, caps) == 32, "caps");
 _Static_assert(offsetof(VrocDeviceDesc, name) == 56, "name");
 #endif
 
 /* Sizes as the C compiler sees them, in a fixed order (compared from C++). */
-void vroc_abi_sizes_from_c(uint64_t out[7]) {
+void vroc_abi_sizes_from_c(uint64_t out[8]) {
     out[0] = sizeof(VrocHostServices);
     out[1] = sizeof(VrocHostInfo);
     out[2] = sizeof(VrocPluginInfo);
@@ -62,4 +73,5 @@ void vroc_abi_sizes_from_c(uint64_t out[7]) {
     out[4] = sizeof(VrocDeviceDesc);
     out[5] = sizeof(VrocPoseSample);
     out[6] = sizeof(VrocControlState);
+    out[7] = sizeof(VrocForceCommand);
 }

@@ -2,9 +2,12 @@
 // The analytic plugin against its closed forms, recomputed here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "plugin_test_host.h"
+#include "vroc/core/errors.h"
 
 namespace vroc::plugins::test {
 namespace {
@@ -59,6 +62,55 @@ TEST(AnalyticPlugin, ThrowHoldsButtonUntilReleaseAtTheRequestedSpeed) {
     // Moving forward (+x) and up at 0.5 rad above the horizontal.
     EXPECT_NEAR(std::atan2(r.sample.linear_velocity.z(), r.sample.linear_velocity.x()), 0.5, 1e-5);
     EXPECT_LT((r.sample.pose.position - Vec3(0.6 * std::sin(0.5), 0, 1.2 - 0.6 * std::cos(0.5))).norm(), 1e-5);
+}
+
+TEST(AnalyticPlugin, LineMovesAtConstantVelocityWithFixedOrientationAndButtonHeld) {
+    auto host = makeTestHost();
+    // A 30 deg yaw as [x, y, z, w]; moving (0.3, -0.1, 0.05) m/s from (1, 2, 0.5) for 2 s, button
+    // from 0.25 s.
+    const double h = kPi / 12;
+    char quat[96];
+    std::snprintf(quat, sizeof quat, "qx=0,qy=0,qz=%.17g,qw=%.17g", std::sin(h), std::cos(h));
+    auto device = host->open("analytic", std::string("motion=line,x=1,y=2,z=0.5,vx=0.3,vy=-0.1,vz=0.05,") + quat +
+                                             ",press_at=0.25,duration=2");
+    const Vec3 start(1, 2, 0.5), v(0.3, -0.1, 0.05);
+    const Quat q(Eigen::AngleAxisd(kPi / 6, Vec3::UnitZ()));
+    for (double t : {-1.0, 0.0, 0.2, 0.25, 1.0, 1.999, 2.0, 5.0}) {
+        const int64_t ns = static_cast<int64_t>(std::llround(t * 1e9));
+        const PoseResult r = device->pose(0, ns);
+        ASSERT_TRUE(r.ok()) << r.message;
+        const double moved = std::clamp(ns * 1e-9, 0.0, 2.0);
+        EXPECT_LT((r.sample.pose.position - (start + v * moved)).norm(), 1e-12) << "t=" << t;
+        EXPECT_LT(angleBetween(r.sample.pose.orientation, q), 1e-12) << "t=" << t;
+        const bool moving = t >= 0 && t < 2;
+        EXPECT_EQ(r.sample.linear_velocity, moving ? v : Vec3::Zero()) << "t=" << t;
+        EXPECT_EQ(r.sample.angular_velocity, Vec3::Zero());
+        EXPECT_EQ(device->controls(ns).state.buttons, t >= 0.25 ? 1u : 0u) << "t=" << t;
+    }
+    // Velocity against a central difference of the reported positions.
+    const Vec3 diff = (device->pose(0, 1'000'001'000).sample.pose.position -
+                       device->pose(0, 999'999'000).sample.pose.position) / 2e-6;
+    EXPECT_LT((diff - v).norm(), 1e-6);
+}
+
+TEST(AnalyticPlugin, LineDefaultsAndLineOnlyOptions) {
+    auto host = makeTestHost();
+    // Defaults: at rest at the centre, identity orientation, button held from t = 0.
+    auto rest = host->open("analytic", "motion=line");
+    const PoseResult r = rest->pose(0, 3'000'000'000);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.sample.pose.position, Vec3(0, 0, 1.2));
+    EXPECT_EQ(r.sample.pose.orientation.coeffs(), Quat::Identity().coeffs());
+    EXPECT_EQ(rest->controls(0).state.buttons, 1u);
+    // The line's options exist only for a line; a bad quaternion is named.
+    EXPECT_THROW(host->open("analytic", "motion=circle,vx=1"), InputError);
+    try {
+        host->open("analytic", "motion=line,qw=0.5");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("options qx,qy,qz,qw: expected a unit quaternion [x, y, z, w] (norm 0.5"),
+                  std::string::npos) << e.what();
+    }
 }
 
 TEST(AnalyticPlugin, NoiseIsDeterministicAndBounded) {

@@ -37,8 +37,12 @@ TEST_P(BrokenPluginLoad, RejectedWithOneClearLine) {
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, BrokenPluginLoad,
     ::testing::Values(LoadCase{"no-entry", "no exported symbol vroc_plugin_negotiate (not a VROC device plugin)"},
-                      LoadCase{"wrong-abi", "ABI version 99 not supported (host accepts 1..1)"},
-                      LoadCase{"small-struct", "function table is too small (struct_size 56 bytes, host needs at least 88)"},
+                      LoadCase{"wrong-abi", "ABI version 99 not supported (host accepts 1..2)"},
+                      LoadCase{"small-struct",
+                               "function table is too small for ABI 2 (struct_size 56 bytes, host needs at least 96)"},
+                      LoadCase{"v2-short-table",
+                               "function table is too small for ABI 2 (struct_size 88 bytes, host needs at least 96)"},
+                      LoadCase{"force-no-send", "device 0: force output declared but send_force is null"},
                       LoadCase{"null-table", "null function table"},
                       LoadCase{"negotiate-fails", "vroc_plugin_negotiate failed with code -1"}),
     [](const auto& info) {

@@ -9,25 +9,25 @@
 #include "plugin_test_host.h"
 #include "vroc/core/errors.h"
 
-extern "C" void vroc_abi_sizes_from_c(uint64_t out[7]);
+extern "C" void vroc_abi_sizes_from_c(uint64_t out[8]);
 
 namespace vroc::plugins::test {
 namespace {
 
 TEST(PluginAbi, CAndCppAgreeOnStructSizes) {
-    uint64_t c_sizes[7];
+    uint64_t c_sizes[8];
     vroc_abi_sizes_from_c(c_sizes);
-    const uint64_t cpp_sizes[7] = {sizeof(VrocHostServices), sizeof(VrocHostInfo),   sizeof(VrocPluginInfo),
+    const uint64_t cpp_sizes[8] = {sizeof(VrocHostServices), sizeof(VrocHostInfo),   sizeof(VrocPluginInfo),
                                    sizeof(VrocDeviceApi),    sizeof(VrocDeviceDesc), sizeof(VrocPoseSample),
-                                   sizeof(VrocControlState)};
-    for (int i = 0; i < 7; ++i) EXPECT_EQ(c_sizes[i], cpp_sizes[i]) << "struct #" << i;
+                                   sizeof(VrocControlState), sizeof(VrocForceCommand)};
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(c_sizes[i], cpp_sizes[i]) << "struct #" << i;
 }
 
 TEST(PluginNegotiation, AnalyticDeclaresItself) {
     auto host = makeTestHost();
     const LoadedPlugin& plugin = host->load("analytic");
     EXPECT_EQ(plugin.name, "analytic");
-    EXPECT_EQ(plugin.version, "1.0.0");
+    EXPECT_EQ(plugin.version, "1.1.0");
     EXPECT_EQ(plugin.abi_version, VROC_PLUGIN_ABI_VERSION);
     EXPECT_EQ(plugin.path, std::string(VROC_TEST_PLUGIN_DIR) + "/vroc-plugin-analytic.so");
     ASSERT_EQ(plugin.devices.size(), 1u);
@@ -42,7 +42,7 @@ TEST(PluginNegotiation, AnalyticDeclaresItself) {
 
 TEST(PluginNegotiation, EveryBuiltinLoadsAndExportsOnlyTheEntryPoint) {
     auto host = makeTestHost();
-    for (const char* name : {"analytic", "replay", "spacemouse-sim", "udp", "predict"}) {
+    for (const char* name : {"analytic", "replay", "spacemouse-sim", "udp", "predict", "force-log", "spacenav"}) {
         const LoadedPlugin& plugin = host->load(name);
         EXPECT_EQ(plugin.name, name);
         EXPECT_FALSE(plugin.devices.empty());
@@ -72,7 +72,7 @@ struct RawNegotiation {
 TEST(PluginNegotiation, PluginRefusesHostRangeWithoutItsVersionAndTooSmallOutput) {
     RawNegotiation raw(std::string(VROC_TEST_PLUGIN_DIR) + "/vroc-plugin-analytic.so");
     ASSERT_NE(raw.negotiate, nullptr);
-    VrocHostInfo host{VROC_STRUCT_HOST_INFO, 1, sizeof(VrocHostInfo), 2, 3, "future host", nullptr};
+    VrocHostInfo host{VROC_STRUCT_HOST_INFO, 1, sizeof(VrocHostInfo), 3, 4, "future host", nullptr};
     VrocPluginInfo info{};
     info.struct_type = VROC_STRUCT_PLUGIN_INFO;
     info.struct_version = 1;
@@ -89,6 +89,48 @@ TEST(PluginNegotiation, PluginRefusesHostRangeWithoutItsVersionAndTooSmallOutput
     EXPECT_EQ(raw.negotiate(&host, &info), VROC_OK);  // works without services too
     EXPECT_EQ(info.abi_version, 1u);
     EXPECT_NE(info.api, nullptr);
+}
+
+// The SDK answers with the highest version both sides know.
+TEST(PluginNegotiation, SdkPluginChoosesTheHighestCommonVersion) {
+    RawNegotiation raw(std::string(VROC_TEST_PLUGIN_DIR) + "/vroc-plugin-analytic.so");
+    ASSERT_NE(raw.negotiate, nullptr);
+    const struct {
+        uint32_t min, max;
+        int32_t rc;
+        uint32_t chosen;
+    } cases[] = {{1, 1, VROC_OK, 1}, {1, 2, VROC_OK, 2}, {2, 2, VROC_OK, 2}, {1, 9, VROC_OK, 2},
+                 {2, 9, VROC_OK, 2}, {3, 9, VROC_ERROR_ABI, 0}};
+    for (const auto& c : cases) {
+        VrocHostInfo host{VROC_STRUCT_HOST_INFO, 1, sizeof(VrocHostInfo), c.min, c.max, "host", nullptr};
+        VrocPluginInfo info{};
+        info.struct_type = VROC_STRUCT_PLUGIN_INFO;
+        info.struct_version = 1;
+        info.struct_size = sizeof info;
+        EXPECT_EQ(raw.negotiate(&host, &info), c.rc) << c.min << ".." << c.max;
+        EXPECT_EQ(info.abi_version, c.chosen) << c.min << ".." << c.max;
+        if (c.rc == VROC_OK) {
+            // The same table serves both versions: large enough for ABI 2, ABI-1 set_force unused.
+            EXPECT_GE(info.api->struct_size, VROC_DEVICE_API_SIZE_V2);
+            EXPECT_EQ(info.api->set_force, nullptr);
+            EXPECT_NE(info.api->send_force, nullptr);
+        }
+    }
+}
+
+TEST(PluginNegotiation, HostOffersOneToTwoAndCanActAsAnAbiOneHost) {
+    auto host = makeTestHost();
+    EXPECT_EQ(host->load("analytic").abi_version, 2u);
+    HostOptions options;
+    options.search_dirs = {VROC_TEST_PLUGIN_DIR};
+    options.use_environment = false;
+    options.use_default_dirs = false;
+    options.log = [](int32_t, const std::string&, const std::string&) {};
+    options.abi_max = 1;
+    PluginHost old_host(options);
+    EXPECT_EQ(old_host.load("analytic").abi_version, 1u);
+    options.abi_max = 3;
+    EXPECT_THROW(PluginHost{options}, InputError);
 }
 
 // A plugin linked into the program: the same validation without dlopen.
@@ -119,7 +161,7 @@ int32_t staticNegotiate(const VrocHostInfo* host, VrocPluginInfo* out) {
             if (n) b[0] = '\0';
             return 0;
         },
-        nullptr};
+        nullptr, nullptr};
     if (host->abi_min > 1 || host->abi_max < 1) return VROC_ERROR_ABI;
     out->abi_version = 1;
     out->device_count = 1;
@@ -186,7 +228,7 @@ TEST(PluginSearch, ByNameByPathAndByEnvironment) {
     EXPECT_EQ(env_host.load("fixture-nan-pose").name, "nan-pose");
     // findPluginFiles lists only vroc-plugin-*.so, sorted.
     const auto files = findPluginFiles({VROC_TEST_PLUGIN_DIR});
-    ASSERT_EQ(files.size(), 5u);
+    ASSERT_EQ(files.size(), 7u);
     EXPECT_EQ(files.front(), std::string(VROC_TEST_PLUGIN_DIR) + "/vroc-plugin-analytic.so");
 }
 

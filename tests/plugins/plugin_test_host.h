@@ -2,6 +2,7 @@
 // A PluginHost for tests: only the build's plugin directory, logs captured.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -23,8 +24,11 @@ struct LogCapture {
     }
 };
 
-inline std::unique_ptr<PluginHost> makeTestHost(std::shared_ptr<LogCapture> capture = nullptr) {
+/// `clock`: the host clock plugins see (default steady_clock); tests of live devices freeze it.
+inline std::unique_ptr<PluginHost> makeTestHost(std::shared_ptr<LogCapture> capture = nullptr,
+                                                std::function<int64_t()> clock = nullptr) {
     HostOptions options;
+    options.clock = std::move(clock);
     options.search_dirs = {VROC_TEST_PLUGIN_DIR};
     options.use_environment = false;
     options.use_default_dirs = false;

@@ -7,11 +7,13 @@
 #include <unistd.h>
 
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <thread>
 
+#include "opentrack_sender.h"
 #include "plugin_test_host.h"
 
 namespace vroc::plugins::test {
@@ -104,6 +106,52 @@ TEST(UdpPlugin, ReceivesOpentrackDatagramsAndDropsBadOnes) {
     r = device->pose(0, host->nowNs() + 61'000'000'000);
     EXPECT_TRUE(r.ok());
     EXPECT_FALSE(r.sample.has(VROC_POSE_ORIENTATION_TRACKED));
+}
+
+// The datagram is six little-endian IEEE doubles (opentrack writes its double[6] as it lies in
+// memory; x86 and ARM are little-endian): built here byte by byte, not from a double array.
+TEST(UdpPlugin, DatagramIsSixLittleEndianDoublesInOpentrackOrder) {
+    static_assert(std::endian::native == std::endian::little, "opentrack's datagrams are native-endian");
+    auto host = makeTestHost();
+    const int port = freeLoopbackPort();
+    auto device = host->open("udp", "port=" + std::to_string(port) + ",stale=60");
+    const double values[6] = {-12.5, 3.0, 40.0, -45.0, 10.0, 5.0};  // TX TY TZ [cm], yaw pitch roll [deg]
+    unsigned char bytes[48];
+    for (int i = 0; i < 6; ++i) {
+        const auto bits = std::bit_cast<uint64_t>(values[i]);
+        for (int b = 0; b < 8; ++b) bytes[8 * i + b] = static_cast<unsigned char>(bits >> (8 * b));
+    }
+    Sender(port).send(bytes, sizeof bytes);
+    ASSERT_TRUE(waitFor([&] { return device->pose(0, host->nowNs()).ok(); }));
+    const PoseResult r = device->pose(0, host->nowNs());
+    EXPECT_LT((r.sample.pose.position - Vec3(-0.40, 0.125, 0.03)).norm(), 1e-12);
+    const Quat expected = Quat(Eigen::AngleAxisd(-kPi / 4, Vec3::UnitZ())) *
+                          Quat(Eigen::AngleAxisd(kPi / 18, Vec3::UnitY())) *
+                          Quat(Eigen::AngleAxisd(kPi / 36, Vec3::UnitX()));
+    EXPECT_LT(angleBetween(r.sample.pose.orientation, expected), 1e-9);
+}
+
+// opentrack's output as it runs: 250 datagrams a second from its pipeline thread.
+TEST(UdpPlugin, FollowsAnOpentrackStreamAt250Hz) {
+    auto host = makeTestHost();
+    const int port = freeLoopbackPort();
+    auto device = host->open("udp", "port=" + std::to_string(port) + ",stale=60");
+    // A head turning 60 deg/s and leaning 10 cm/s left for 0.3 s.
+    auto head = [](double t) { return OpentrackPose{-10.0 * t, 0.0, 0.0, 60.0 * t, 0.0, 0.0}; };
+    OpentrackSender sender(port);
+    const auto begin = std::chrono::steady_clock::now();
+    const int sent = sender.stream(head, 0.3);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    EXPECT_EQ(sent, 75);                    // 0.3 s x 250 Hz
+    EXPECT_GE(elapsed, 74 * 0.004 - 1e-3);  // paced, not a burst
+    ASSERT_TRUE(waitFor([&] { return device->pose(0, host->nowNs()).sample.sequence == 75; }))
+        << "received " << device->pose(0, host->nowNs()).sample.sequence;
+    // The newest pose is the last one sent: t = 74 / 250 s.
+    const PoseResult r = device->pose(0, host->nowNs());
+    const double t = 74 / 250.0;
+    EXPECT_LT((r.sample.pose.position - Vec3(0, 0.1 * t, 0)).norm(), 1e-12);  // -TX/100 = left
+    EXPECT_LT(angleBetween(r.sample.pose.orientation, Quat(Eigen::AngleAxisd(60.0 * t * kPi / 180, Vec3::UnitZ()))),
+              1e-9);
 }
 
 TEST(UdpPlugin, PortInUseIsAClearOpenError) {

@@ -17,10 +17,11 @@ struct BackendsOptions {
 };
 
 void printCapabilities(const BackendCapabilities& c) {
-    std::printf("  shapes: sphere %s, box %s, hull %s, compound %s; restitution %s; friction %s; "
+    std::printf("  shapes: sphere %s, box %s, hull %s, compound %s; restitution %s; tracked bodies %s; friction %s; "
                 "continuous collision %s; %s precision; %s\n",
                 supportName(c.sphere), supportName(c.box), supportName(c.hull), supportName(c.compound),
-                supportName(c.restitution), frictionName(c.friction), c.continuous_collision ? "yes" : "no",
+                supportName(c.restitution), supportName(c.tracked), frictionName(c.friction),
+                c.continuous_collision ? "yes" : "no",
                 c.precision.c_str(), c.deterministic ? "deterministic" : "not deterministic");
     for (const auto& [feature, note] : c.notes) std::printf("    %s: %s\n", feature.c_str(), note.c_str());
 }

@@ -18,6 +18,8 @@ struct PlayCliOptions {
     play::PlayOptions play;
     std::vector<std::string> hmd;
     std::vector<std::string> set;
+    std::vector<std::string> track;
+    std::string sound_level = "normalize";
     bool no_frames = false;
     bool quiet = false;
 };
@@ -26,6 +28,8 @@ int runPlayCommand(PlayCliOptions& o) {
     for (const auto& text : o.hmd) o.play.hmd_overrides.push_back(splitAssignment(text));
     for (const auto& text : o.set) o.play.backend_settings.push_back(splitAssignment(text));
     o.play.write_frames = !o.no_frames;
+    for (const auto& text : o.track) o.play.track.push_back(play::parseTrackOption(text));
+    o.play.sound.level = audio::parseOutputLevel(o.sound_level, "--sound-level");
     const play::PlayReport r = play::runPlay(o.play);
     if (!o.play.out_dir.empty()) play::writePlayJson(r, o.play.out_dir + "/play.json");
     if (!o.quiet) {
@@ -37,7 +41,24 @@ int runPlayCommand(PlayCliOptions& o) {
         for (const auto& [name, s] : r.registration)
             std::printf("registration error, %s: mean %.2f deg, p95 %.2f deg, max %.2f deg\n", name.c_str(), s.mean,
                         s.p95, s.max);
+        if (r.realtime)
+            std::printf("registration error: not modelled in real time (the newest head sample is drawn; the "
+                        "measured latency below is the chain's)\n");
         std::printf("grabs %d, throws %zu\n", r.grabs, r.throws.size());
+        if (r.hand_accepts_force)
+            std::printf("forces sent to the hand %lld (rejected %lld)\n", static_cast<long long>(r.forces_sent),
+                        static_cast<long long>(r.forces_rejected));
+        for (const play::TrackedReport& t : r.tracked)
+            std::printf("tracked %s <- %s#%d: %lld frames set, %lld without a sample\n", t.body.c_str(), t.device.c_str(),
+                        t.sensor, static_cast<long long>(t.frames_set), static_cast<long long>(t.frames_without_sample));
+        if (r.realtime) {
+            std::printf("real time: %d of %d frames missed their deadline (worst %.2f ms late)\n", r.frames_missed,
+                        r.frames, r.worst_lateness_ms);
+            for (const auto& [device, l] : r.latency_ms)
+                std::printf("latency %s sample -> frame done [ms]: mean %.2f, p50 %.2f, p95 %.2f, max %.2f (%d frames)\n",
+                            device.c_str(), l.mean, l.p50, l.p95, l.max, l.count);
+        }
+        if (!r.sound.empty()) std::printf("sound %s: %s\n", o.play.sound_path.c_str(), r.sound.c_str());
         if (!o.play.out_dir.empty()) std::printf("wrote %s/play.json\n", o.play.out_dir.c_str());
     }
     return 0;
@@ -67,6 +88,17 @@ Action setup(CLI::App& sub, const Context&) {
     sub.add_flag("--no-frames", o->no_frames, "Do not write PNG frames (play.json and --mp4 still written)");
     sub.add_option("--grab-reach", o->play.grab.reach, "Grab reach beyond an object's bounding radius [m] (default 0.15)");
     sub.add_option("--plugin-dir", o->play.plugin_dirs, "Extra plugin search directory, repeatable");
+    sub.add_flag("--realtime", o->play.realtime,
+                 "Pace frames to the wall clock at the scene's frame_dt, read devices at host time and report "
+                 "latency and missed frames (default: as fast as possible on simulated time)");
+    sub.add_option("--track", o->track,
+                   "Tracked body's device BODY=PLUGIN_SPEC[#SENSOR], repeatable; overrides the scene's tracking.device")
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    sub.add_option("--sound", o->play.sound_path,
+                   "Also write the impacts as a WAV (and <stem>_events.csv next to it; docs/hmd.md#impact-sound)");
+    sub.add_option("--sound-level", o->sound_level,
+                   "normalize: peak at -1 dBFS (default); fixed: same impulse, same level, soft limiter");
     sub.add_flag("--quiet,-q", o->quiet, "No summary");
     return [o] { return runPlayCommand(*o); };
 }

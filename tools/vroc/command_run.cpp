@@ -15,10 +15,13 @@
 
 #include "command.h"
 #include "progress_bar.h"
+#include "vroc/audio/sound_recorder.h"
 #include "vroc/core/backend_registry.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/run_recorder.h"
 #include "vroc/core/scene_loader.h"
+#include "vroc/play/tracked_driver.h"
+#include "vroc/plugin/plugin_host.h"
 
 namespace vroc::cli {
 namespace {
@@ -34,6 +37,9 @@ struct RunOptions {
     std::optional<double> dt;         ///< [s]
     std::string out_dir;
     std::vector<std::string> assignments;   ///< --set key=value, in order (later wins)
+    std::vector<std::string> track;         ///< --track BODY=SPEC[#SENSOR]: tracked bodies' devices
+    std::string sound;                      ///< --sound: WAV of the impacts ("" = none)
+    std::string sound_level = "normalize";  ///< --sound-level
     bool quiet = false;
 };
 
@@ -95,6 +101,8 @@ int run(const RunOptions& options, const Context& context) {
     for (const auto& text : options.assignments) overrides.push_back(splitAssignment(text));
     const double duration = positiveSeconds(options.duration, kDefaultDuration, "--duration");
     if (options.dt) positiveSeconds(options.dt, 0, "--dt");
+    std::vector<play::TrackOverride> track;
+    for (const auto& text : options.track) track.push_back(play::parseTrackOption(text));
 
     recording::RunRequest request;
     request.settings = resolveSettings(backend.settings, overrides);
@@ -108,6 +116,35 @@ int run(const RunOptions& options, const Context& context) {
     request.out_dir = options.out_dir.empty() ? defaultOutDir(scene, backend.name) : fs::path(options.out_dir);
     request.command_line = context.command_line;
 
+    // --track: those tracked bodies follow their devices, read at simulation time before each frame.
+    // Without it every tracked body moves at its file velocities (deterministic), the scene's
+    // tracking.device notwithstanding.
+    std::optional<plugins::PluginHost> plugin_host;
+    std::optional<play::TrackedDriver> tracked;
+    if (!track.empty()) {
+        plugin_host.emplace();
+        tracked.emplace(scene, *plugin_host, track, /*use_scene_devices=*/false);
+        request.before_frame = [&tracked](Backend& b, double t) { tracked->update(t, b); };
+    }
+
+    // --sound: checked (settings, materials, a writable place) before anything is simulated.
+    std::optional<audio::SoundRecorder> sound;
+    std::optional<audio::SoundSummary> sound_summary;
+    if (!options.sound.empty()) {
+        audio::SoundSettings settings;
+        settings.level = audio::parseOutputLevel(options.sound_level, "--sound-level");
+        const double end = static_cast<double>(recording::frameCount(request.duration, request.frame_dt)) *
+                           request.frame_dt;
+        sound.emplace(scene, request.frame_dt, end, options.sound, settings);
+        request.on_events = [&sound](const std::vector<CollisionEvent>& events) { sound->addEvents(events); };
+        request.finish_outputs = [&](recording::RunRecord& record) {
+            sound_summary = sound->finish(record.simulated_time);
+            record.outputs["sound"] = {options.sound, sound_summary->describe()};
+            record.outputs["sound_events"] = {sound_summary->events_csv.string(),
+                                              "every collision event: t,body_a,body_b,impulse,threshold,sample,status"};
+        };
+    }
+
     ProgressBar bar(context.stderr_is_terminal && !options.quiet, scene.name + " on " + backend.name);
     g_interrupted = 0;
     std::signal(SIGINT, onInterrupt);
@@ -120,6 +157,9 @@ int run(const RunOptions& options, const Context& context) {
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     if (!options.quiet) printSummary(record, request.out_dir);
+    if (!options.quiet && sound_summary)
+        std::printf("vroc: sound in %s: %s\n", fs::absolute(sound_summary->wav).lexically_normal().string().c_str(),
+                    sound_summary->describe().c_str());
     return 0;
 }
 
@@ -135,9 +175,20 @@ Action setup(CLI::App& sub, const Context& context) {
     sub.add_option("--set", o->assignments, "Backend setting key=value, repeatable (keys: `vroc backends`)")
         ->allow_extra_args(false)   // one value per --set, so `--set k=v SCENE` leaves SCENE alone
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    sub.add_option("--track", o->track,
+                   "Tracked body's device BODY=PLUGIN_SPEC[#SENSOR], repeatable (default: tracked bodies move at "
+                   "their file velocities)")
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    sub.add_option("--sound", o->sound,
+                   "Also write the impacts as a WAV (modal synthesis per material, docs/hmd.md#impact-sound) "
+                   "and <stem>_events.csv next to it");
+    sub.add_option("--sound-level", o->sound_level,
+                   "normalize: peak at -1 dBFS (default); fixed: same impulse, same level, soft limiter");
     sub.add_flag("--quiet,-q", o->quiet, "No progress bar and no summary; only errors");
     sub.footer(
-        "Writes trajectory.csv, events.csv and run.json (last, atomically) into the output directory.\n"
+        "Writes trajectory.csv, events.csv and run.json (last, atomically) into the output directory;\n"
+        "--sound also writes the WAV and <stem>_events.csv (before run.json, atomically).\n"
         "Exit codes: 0 success, 2 bad input or usage, 3 failure while running.");
     return [o, context] { return run(*o, context); };
 }

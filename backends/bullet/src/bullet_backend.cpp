@@ -28,7 +28,12 @@ void validate(const Scene& scene) {
         if (body.material < 0 || static_cast<std::size_t>(body.material) >= scene.materials.size())
             throw InputError("scene '" + scene.name + "': body '" + body.name + "': material index " +
                              std::to_string(body.material) + " out of range");
-        if (body.isStatic()) continue;
+        if (body.isTracked() && !(body.pose.position.allFinite() && body.pose.orientation.coeffs().allFinite() &&
+                                  body.pose.orientation.norm() > 0.0 && body.linear_velocity.allFinite() &&
+                                  body.angular_velocity.allFinite()))
+            throw InputError("scene '" + scene.name + "': body '" + body.name +
+                             "': a tracked body needs a finite pose (non-zero quaternion) and finite velocities");
+        if (!body.isDynamic()) continue;
         if (!(body.mass_properties.mass > 0.0) || !(principalFrame(body.mass_properties).principal_inertia.minCoeff() > 0.0))
             throw InputError("scene '" + scene.name + "': body '" + body.name +
                              "': a virtual body needs positive mass and positive principal inertia");
@@ -51,6 +56,7 @@ BulletBackend::BulletBackend(const Scene& scene, const BulletConfig& config)
     validate(scene);
     installMaterialCombineCallbacks();
     world_->setGravity(toBt(scene.gravity));
+    world_->setInternalTickCallback(&BulletBackend::preTick, this, /*isPreTick=*/true);
     configureSolver();
     bodies_.reserve(scene.bodies.size());
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -76,10 +82,10 @@ void BulletBackend::configureSolver() {
 
 void BulletBackend::addBody(int index, const Body& body) {
     BodyRecord rec;
-    rec.is_static = body.isStatic();
-    double mass = 0.0;
+    rec.role = body.role;
+    double mass = 0.0;   // static and kinematic bodies: infinite mass
     btVector3 inertia(0, 0, 0);
-    if (!rec.is_static) {
+    if (body.isDynamic()) {
         const PrincipalFrame pf = principalFrame(body.mass_properties);   // validated
         rec.com_in_body = pf.body_to_com;
         mass = body.mass_properties.mass;
@@ -92,7 +98,16 @@ void BulletBackend::addBody(int index, const Body& body) {
     rigid.setUserIndex(index);
     rigid.setWorldTransform(toBt(body.pose * rec.com_in_body));
     rigid.setInterpolationWorldTransform(rigid.getWorldTransform());
-    if (!rec.is_static) {
+    if (body.isTracked()) {
+        // Bullet's kinematic body: moved by the program, never by the solver, which sees its
+        // velocity; addRigidBody puts it in StaticFilter, so it meets no static or kinematic body.
+        rigid.setCollisionFlags(rigid.getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+        rigid.setActivationState(DISABLE_DEACTIVATION);
+        rec.motion.sample.pose = {body.pose.position, body.pose.orientation.normalized()};
+        rec.motion.sample.linear_velocity = body.linear_velocity;
+        rec.motion.sample.angular_velocity = body.angular_velocity;
+        tracked_.push_back(index);
+    } else if (body.isDynamic()) {
         rigid.setActivationState(DISABLE_DEACTIVATION);   // sleeping off: no frozen bodies
         rigid.setLinearVelocity(toBt(body.linear_velocity));
         rigid.setAngularVelocity(toBt(body.angular_velocity));
@@ -107,7 +122,8 @@ void BulletBackend::addBody(int index, const Body& body) {
         }
     }
     world_->addRigidBody(&rigid);
-    if (!rec.is_static) rigid.setGravity(toBt(gravity_));
+    if (body.isDynamic()) rigid.setGravity(toBt(gravity_));
+    if (body.isTracked()) placeTracked(rec, 0.0);
     rec.last_good = comState(rigid);
     bodies_.push_back(std::move(rec));
 }
@@ -126,6 +142,48 @@ void BulletBackend::internalStep(double h, double end_time) {
     ++internal_steps_;
     recoverBadStates();
     events_.afterStep(*dispatcher_, end_time);
+    // Tracked bodies to where they are at the step's end, which is the next step's start: every
+    // step collides the bodies at one time, and the frame's last step leaves them at the frame end.
+    for (int i : tracked_) placeTracked(bodies_[static_cast<std::size_t>(i)], end_time);
+}
+
+// The kinematic body at its motion's pose. A pose that overflows (a finite but huge velocity) is
+// numerical trouble: counted, and the body stays where it was, at rest, from then on.
+void BulletBackend::placeTracked(BodyRecord& rec, double time) {
+    Pose pose = rec.motion.poseAt(time);
+    if (!pose.position.allFinite() || !pose.orientation.coeffs().allFinite()) {
+        ++nonfinite_;
+        rec.motion.t0 = time;
+        rec.motion.sample.pose = fromBt(rec.rigid->getWorldTransform());
+        rec.motion.sample.linear_velocity.setZero();
+        rec.motion.sample.angular_velocity.setZero();
+        pose = rec.motion.sample.pose;
+    }
+    btRigidBody& rigid = *rec.rigid;
+    rigid.setWorldTransform(toBt(pose));
+    // Interpolation transform = world transform: Bullet's saveKinematicState then estimates a zero
+    // velocity, which preTick replaces by the tracker's.
+    rigid.setInterpolationWorldTransform(rigid.getWorldTransform());
+    rigid.setLinearVelocity(toBt(rec.motion.sample.linear_velocity));
+    rigid.setAngularVelocity(toBt(rec.motion.sample.angular_velocity));
+    rigid.setInterpolationLinearVelocity(rigid.getLinearVelocity());
+    rigid.setInterpolationAngularVelocity(rigid.getAngularVelocity());
+}
+
+// stepSimulation sets a kinematic body's velocity by finite differences of its transforms
+// (btRigidBody::saveKinematicState) before the internal step; the step then calls this, so the
+// contact solver sees the tracker's velocities exactly (the difference quotient of a small turn
+// loses digits in acos).
+void BulletBackend::preTick(btDynamicsWorld* world, double /*h*/) {
+    static_cast<BulletBackend*>(world->getWorldUserInfo())->holdTrackedVelocities();
+}
+
+void BulletBackend::holdTrackedVelocities() {
+    for (int i : tracked_) {
+        const BodyRecord& rec = bodies_[static_cast<std::size_t>(i)];
+        rec.rigid->setLinearVelocity(toBt(rec.motion.sample.linear_velocity));
+        rec.rigid->setAngularVelocity(toBt(rec.motion.sample.angular_velocity));
+    }
 }
 
 // Two kinds of trouble, each counted and recovered so the run goes on:
@@ -134,7 +192,7 @@ void BulletBackend::internalStep(double h, double end_time) {
 //    stops simulating the body; it goes back to its last good pose, at rest, and is simulated.
 void BulletBackend::recoverBadStates() {
     for (auto& rec : bodies_) {
-        if (rec.is_static) continue;
+        if (rec.role != BodyRole::Virtual) continue;   // tracked bodies: placeTracked
         btRigidBody& rigid = *rec.rigid;
         if (!finite(rigid.getWorldTransform(), rigid.getLinearVelocity(), rigid.getAngularVelocity())) {
             ++nonfinite_;
@@ -176,6 +234,10 @@ BodyState BulletBackend::bodyState(int body) const {
     if (body < 0 || body >= bodyCount()) throw InputError("bullet: no body with index " + std::to_string(body));
     const BodyRecord& rec = bodies_[static_cast<std::size_t>(body)];
     BodyState s = comState(*rec.rigid);
+    if (rec.role == BodyRole::Tracked) {   // the tracker's velocities, not Bullet's estimate
+        s.linear_velocity = rec.motion.sample.linear_velocity;
+        s.angular_velocity = rec.motion.sample.angular_velocity;
+    }
     s.pose = s.pose * rec.com_in_body.inverse();   // report the scene's body frame
     if (s.pose.orientation.w() < 0.0) s.pose.orientation.coeffs() *= -1.0;   // same rotation, w >= 0
     return s;
@@ -189,7 +251,7 @@ BulletBackend::BodyRecord& BulletBackend::record(int body, const char* what) {
 
 void BulletBackend::setBodyState(int body, const BodyState& state) {
     BodyRecord& rec = record(body, "setBodyState");
-    if (rec.is_static) return;
+    if (rec.role == BodyRole::Real) return;
     // A non-finite state is numerical trouble (a tracker glitch): counted and refused. A zero
     // quaternion is no rotation at all: the caller's mistake.
     if (!state.pose.position.allFinite() || !state.pose.orientation.coeffs().allFinite() ||
@@ -201,13 +263,19 @@ void BulletBackend::setBodyState(int body, const BodyState& state) {
         throw InputError("bullet: setBodyState: body " + std::to_string(body) + ": expected a non-zero quaternion");
     BodyState com = state;
     com.pose.orientation.normalize();
+    if (rec.role == BodyRole::Tracked) {   // a tracker sample: this pose now, these velocities from now on
+        rec.motion.t0 = time_;
+        rec.motion.sample = com;
+        placeTracked(rec, time_);
+        return;
+    }
     com.pose = com.pose * rec.com_in_body;
     setComState(*rec.rigid, com);
 }
 
 void BulletBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) {
     BodyRecord& rec = record(body, "applyImpulse");
-    if (rec.is_static) return;
+    if (rec.role != BodyRole::Virtual) return;   // real and tracked bodies have infinite mass
     if (!impulse.allFinite() || !world_point.allFinite()) {   // numerical trouble: counted, ignored
         ++nonfinite_;
         return;

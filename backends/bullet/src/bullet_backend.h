@@ -3,7 +3,11 @@
 //  - the scene's body frame (what BodyState.pose reports), and
 //  - Bullet's rigid-body frame at the centre of mass along the principal axes of inertia;
 //    `com_in_body` maps the second into the first.
-// Real bodies are static (mass 0) and placed at their scene pose directly.
+// Real bodies are static (mass 0) and placed at their scene pose directly. Tracked bodies are
+// Bullet kinematic bodies (CF_KINEMATIC_OBJECT): their frame is the scene body frame (COM at the
+// origin), placed at the tracker motion's pose at the start of every internal step, and given its
+// velocities in the world's pre-tick callback (after Bullet's own finite-difference estimate), so
+// the solver sees the motion.
 #pragma once
 
 #include <memory>
@@ -12,6 +16,7 @@
 #include "bullet_config.h"
 #include "event_detection.h"
 #include "shape_mapping.h"
+#include "vroc/core/tracked_motion.h"
 #include "vroc/core/backend.h"
 
 class btDefaultCollisionConfiguration;
@@ -19,6 +24,7 @@ class btCollisionDispatcher;
 class btBroadphaseInterface;
 class btSequentialImpulseConstraintSolver;
 class btDiscreteDynamicsWorld;
+class btDynamicsWorld;
 class btRigidBody;
 
 namespace vroc::bullet {
@@ -42,9 +48,10 @@ private:
     struct BodyRecord {
         std::unique_ptr<btRigidBody> rigid;   ///< owned; registered with world_
         Pose com_in_body;                     ///< Bullet body frame -> scene body frame
-        bool is_static = false;
+        BodyRole role = BodyRole::Virtual;
         BodyState last_good;                  ///< Bullet COM frame state after the last internal step
                                               ///< that left it finite and simulated
+        TrackedMotion motion;                 ///< tracked: the last tracker sample (or the file's motion)
     };
 
     void configureSolver();
@@ -54,6 +61,9 @@ private:
     void recoverBadStates();
     BodyState comState(const btRigidBody& rigid) const;
     void setComState(btRigidBody& rigid, const BodyState& com_state);
+    void placeTracked(BodyRecord& rec, double time);   ///< kinematic body at its motion's pose at `time` [s]
+    void holdTrackedVelocities();                      ///< the tracker velocities, exactly (pre-tick)
+    static void preTick(btDynamicsWorld* world, double h);   ///< Bullet's internal pre-tick callback
 
     BulletConfig config_;
     Vec3 gravity_;
@@ -64,6 +74,7 @@ private:
     std::unique_ptr<btDiscreteDynamicsWorld> world_;
     ShapeMapper shapes_;
     std::vector<BodyRecord> bodies_;
+    std::vector<int> tracked_;                ///< indices of the tracked bodies
     EventDetector events_;
     double time_ = 0.0;                       ///< [s] sum of frame dts
     std::uint64_t frames_ = 0, internal_steps_ = 0, nonfinite_ = 0, aabb_overflow_ = 0, ccd_bodies_ = 0;

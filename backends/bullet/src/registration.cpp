@@ -35,6 +35,7 @@ void registerBackend() {
     c.hull = Support::Approximated;
     c.compound = Support::Exact;
     c.restitution = Support::Approximated;
+    c.tracked = Support::Exact;   // kinematic bodies: infinite mass, their velocity in the contact solve
     c.friction = FrictionModel::Pyramid;
     c.continuous_collision = true;
     c.deterministic = true;

@@ -32,10 +32,16 @@ std::string contactAttributes(const PairMaterial& m, double collision_distance) 
     return s;
 }
 
-// Real geoms: contype 2, conaffinity 1; virtual: contype 1, conaffinity 3. A pair collides when
-// (contype_a & conaffinity_b) || (contype_b & conaffinity_a): real-real never, the rest always.
-std::string collisionBits(bool is_static) {
-    return is_static ? attr("contype", "2") + attr("conaffinity", "1") : attr("contype", "1") + attr("conaffinity", "3");
+// Real geoms: contype 2, conaffinity 1; tracked: contype 4, conaffinity 0; virtual: contype 1,
+// conaffinity 7. A pair collides when (contype_a & conaffinity_b) || (contype_b & conaffinity_a):
+// every pair with a virtual body, no pair without one.
+std::string collisionBits(BodyRole role) {
+    switch (role) {
+        case BodyRole::Real: return attr("contype", "2") + attr("conaffinity", "1");
+        case BodyRole::Tracked: return attr("contype", "4") + attr("conaffinity", "0");
+        case BodyRole::Virtual: break;
+    }
+    return attr("contype", "1") + attr("conaffinity", "7");
 }
 
 struct Part {
@@ -74,6 +80,27 @@ std::string sizeElement(const Scene& scene) {
            attr("nstack", std::to_string(nstack)) + "/>\n";
 }
 
+// With tracked bodies present, <statistic meaninertia>: the sum of the virtual bodies' diagonal
+// joint-space inertia over all dofs. MuJoCo scales its solver's tolerance by 1 / (meaninertia nv);
+// its own meaninertia (the mean diagonal of M at qpos0) would include the tracked bodies' huge
+// masses and loosen the tolerance a millionfold. This keeps the scale the virtual bodies alone give.
+std::string statisticElement(const Scene& scene) {
+    double diagonal = 0.0;
+    long dofs = 0, tracked = 0;
+    for (const Body& b : scene.bodies) {
+        if (b.isStatic()) continue;
+        dofs += 6;
+        if (b.isTracked()) {
+            ++tracked;
+            continue;
+        }
+        diagonal += 3.0 * b.mass_properties.mass + principalFrame(b.mass_properties).principal_inertia.sum();
+    }
+    if (tracked == 0) return "";   // MuJoCo's own statistic
+    const double meaninertia = diagonal > 0.0 ? diagonal / static_cast<double>(dofs) : 1.0;
+    return "  <statistic" + attr("meaninertia", num(meaninertia)) + "/>\n";
+}
+
 class Writer {
 public:
     Writer(const Scene& scene, const ContactMaterials& materials) : scene_(scene), materials_(materials) {}
@@ -86,6 +113,7 @@ public:
             << "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n"
             << "  <option" << attr("timestep", num(timestep)) << attr("gravity", vec(scene_.gravity)) << "/>\n"
             << sizeElement(scene_)
+            << statisticElement(scene_)
             << "  <asset>\n" << assets_.str() << "  </asset>\n"
             << "  <worldbody>\n" << world_.str() << "  </worldbody>\n"
             << "  <contact>\n" << contact_.str() << "  </contact>\n"
@@ -97,11 +125,16 @@ private:
     void body(int i) {
         const Body& b = scene_.bodies[static_cast<std::size_t>(i)];
         Pose frame;   // MuJoCo body frame -> scene body frame
-        if (!b.isStatic()) frame = principalFrame(b.mass_properties).com_in_body;
+        if (b.isDynamic()) frame = principalFrame(b.mass_properties).com_in_body;
         const Pose placed = b.pose * frame;
         world_ << "    <body" << attr("name", bodyName(i)) << attr("pos", vec(placed.position))
                << attr("quat", quat(placed.orientation)) << ">\n";
-        if (!b.isStatic()) {
+        if (b.isTracked()) {
+            const TrackedInertia t = trackedInertia(scene_, b);
+            world_ << "      <joint" << attr("name", "j" + std::to_string(i)) << attr("type", "free") << "/>\n"
+                   << "      <inertial" << attr("pos", "0 0 0") << attr("mass", num(t.mass))
+                   << attr("diaginertia", vec(Vec3::Constant(t.inertia))) << "/>\n";
+        } else if (b.isDynamic()) {
             const PrincipalFrame pf = principalFrame(b.mass_properties);
             world_ << "      <joint" << attr("name", "j" + std::to_string(i)) << attr("type", "free") << "/>\n"
                    << "      <inertial" << attr("pos", "0 0 0") << attr("mass", num(b.mass_properties.mass))
@@ -110,11 +143,11 @@ private:
         const PairMaterial own = materials_.ofBody(i);
         const std::vector<Part> parts = partsOf(b.shape);
         for (std::size_t k = 0; k < parts.size(); ++k)
-            geom(i, static_cast<int>(k), *parts[k].shape, frame.inverse() * parts[k].pose, own, b.isStatic());
+            geom(i, static_cast<int>(k), *parts[k].shape, frame.inverse() * parts[k].pose, own, b.role);
         world_ << "    </body>\n";
     }
 
-    void geom(int i, int k, const Shape& shape, const Pose& pose, const PairMaterial& m, bool is_static) {
+    void geom(int i, int k, const Shape& shape, const Pose& pose, const PairMaterial& m, BodyRole role) {
         world_ << "      <geom" << attr("name", geomName(i, k));
         switch (shape.kind) {
             case Shape::Kind::Sphere: world_ << attr("type", "sphere") << attr("size", num(shape.radius)); break;
@@ -130,7 +163,7 @@ private:
             }
             case Shape::Kind::Compound: break;   // flattened by the scene loader; never nested
         }
-        world_ << attr("pos", vec(pose.position)) << attr("quat", quat(pose.orientation)) << collisionBits(is_static)
+        world_ << attr("pos", vec(pose.position)) << attr("quat", quat(pose.orientation)) << collisionBits(role)
                << attr("condim", "3")
                << attr("friction", num(m.friction) + " " + kSpinFriction + " " + kRollFriction)
                << contactAttributes(m, scene_.collision_distance) << "/>\n";
@@ -144,7 +177,10 @@ private:
         const int n = static_cast<int>(scene_.bodies.size());
         for (int a = 0; a < n; ++a) {
             for (int b = a + 1; b < n; ++b) {
-                if (scene_.bodies[static_cast<std::size_t>(a)].isStatic() && scene_.bodies[static_cast<std::size_t>(b)].isStatic()) continue;
+                // No pair without a virtual body (infinite mass on both sides: no response).
+                if (!scene_.bodies[static_cast<std::size_t>(a)].isDynamic() &&
+                    !scene_.bodies[static_cast<std::size_t>(b)].isDynamic())
+                    continue;
                 if (materials_.group(a) == materials_.group(b)) continue;
                 contact_ << "    <exclude" << attr("body1", bodyName(a)) << attr("body2", bodyName(b)) << "/>\n";
                 const PairMaterial m = materials_.ofPair(a, b);
@@ -166,6 +202,17 @@ private:
 };
 
 }  // namespace
+
+TrackedInertia trackedInertia(const Scene& scene, const Body& body) {
+    double heaviest = 0.0;
+    for (const Body& b : scene.bodies)
+        if (b.isDynamic()) heaviest = std::max(heaviest, b.mass_properties.mass);
+    TrackedInertia t;
+    t.mass = kTrackedMassRatio * (heaviest > 0.0 ? heaviest : 1.0);
+    const double r = std::max(body.shape.boundingRadius(), 1e-3);
+    t.inertia = t.mass * r * r;
+    return t;
+}
 
 std::string bodyName(int body) { return "b" + std::to_string(body); }
 std::string geomName(int body, int part) { return "g" + std::to_string(body) + "_" + std::to_string(part); }

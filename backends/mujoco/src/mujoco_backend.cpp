@@ -44,6 +44,14 @@ void validate(const Scene& scene, const MujocoConfig& config) {
             checkShape(body.shape);
         }
         if (body.isStatic()) continue;
+        if (body.isTracked()) {   // infinite mass: no mass properties; its motion must be finite
+            if (!body.linear_velocity.allFinite() || !body.angular_velocity.allFinite() ||
+                !body.pose.position.allFinite() || !body.pose.orientation.coeffs().allFinite() ||
+                !(body.pose.orientation.norm() > 0.0))
+                throw InputError(where + "body '" + body.name +
+                                 "': a tracked body needs a finite pose (non-zero quaternion) and finite velocities");
+            continue;
+        }
         const PrincipalFrame pf = principalFrame(body.mass_properties);
         if (!(body.mass_properties.mass > 0.0) || !std::isfinite(body.mass_properties.mass) ||
             !(pf.principal_inertia.minCoeff() > 0.0) || !pf.principal_inertia.allFinite())
@@ -106,13 +114,21 @@ MujocoBackend::MujocoBackend(const Scene& scene, const MujocoConfig& config)
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const Body& body = scene.bodies[i];
         BodyRecord rec;
-        rec.is_static = body.isStatic();
+        rec.role = body.role;
         rec.pose = body.pose;
-        if (!rec.is_static) {
+        if (body.isTracked()) {
+            const TrackedInertia t = trackedInertia(scene, body);
+            rec.mass = t.mass;
+            rec.principal_inertia = Vec3::Constant(t.inertia);
+            rec.motion.sample = BodyState{Pose{body.pose.position, body.pose.orientation.normalized()},
+                                          body.linear_velocity, body.angular_velocity};
+        } else if (body.isDynamic()) {
             const PrincipalFrame pf = principalFrame(body.mass_properties);
             rec.com_in_body = pf.com_in_body;
             rec.mass = body.mass_properties.mass;
             rec.principal_inertia = pf.principal_inertia;
+        }
+        if (!body.isStatic()) {
             const int id = bodyId(m, static_cast<int>(i));
             const int joint = m.body_jntadr[id];
             rec.slots = {m.jnt_qposadr[joint], m.jnt_dofadr[joint]};
@@ -127,6 +143,7 @@ MujocoBackend::MujocoBackend(const Scene& scene, const MujocoConfig& config)
         }
         slots.push_back(rec.slots);
         bodies_.push_back(rec);
+        if (body.isTracked()) placeTracked(bodies_.back(), 0.0);
     }
     try {
         mj_forward(model_.get(), data_.get());   // derived quantities for the initial state
@@ -151,12 +168,21 @@ void MujocoBackend::stepFrame(double dt) {
     ++frames_;
 }
 
+// One internal step; tracked bodies then go to where their motion has them at its end, which is
+// where the next step starts: every step collides the bodies at one time.
+void MujocoBackend::internalStep(double h, double end_time) {
+    mujocoStep(h, end_time);
+    for (BodyRecord& rec : bodies_)
+        if (rec.role == BodyRole::Tracked) placeTracked(rec, end_time);
+}
+
 // One mj_step, checked. A bad step is undone (state_guard.h); if that put a body back, the step
 // is taken once more from the repaired state, and if it fails again the blamed bodies stay at
 // their last good pose, at rest, for this step.
-void MujocoBackend::internalStep(double h, double end_time) {
+void MujocoBackend::mujocoStep(double h, double end_time) {
     for (int attempt = 0; attempt < 2; ++attempt) {
         guard_.beforeStep(*data_);
+        holdTrackedWeight();   // (a reset after an error clears qfrc_applied)
         data_->time = end_time - h;
         bool threw = false;
         try {
@@ -179,6 +205,52 @@ void MujocoBackend::internalStep(double h, double end_time) {
     }
 }
 
+// A tracked body's weight, cancelled on its free joint's translational dofs (MuJoCo 2.2 has no
+// gravity compensation of its own): during a step it moves at its velocity, and the contact
+// solve, which couples its acceleration with the virtual body's, sees no gravity on it.
+void MujocoBackend::holdTrackedWeight() {
+    const double* g = model_->opt.gravity;
+    for (const BodyRecord& rec : bodies_) {
+        if (rec.role != BodyRole::Tracked) continue;
+        double* f = data_->qfrc_applied + rec.slots.dof;
+        for (int k = 0; k < 3; ++k) {
+            f[k] = -rec.mass * g[k];
+            f[3 + k] = 0.0;
+        }
+    }
+}
+
+// qpos and qvel of the tracker motion at `time`. A pose beyond MuJoCo's range (a finite but huge
+// velocity) is numerical trouble: counted, and the body stays where it was, at rest, from then on.
+void MujocoBackend::placeTracked(BodyRecord& rec, double time) {
+    Pose pose = rec.motion.poseAt(time);
+    const auto inRange = [](const Vec3& p) { return p.cwiseAbs().maxCoeff() <= mjMAXVAL; };   // false for NaN
+    if (!inRange(pose.position) || !pose.orientation.coeffs().allFinite()) {
+        ++nonfinite_;
+        rec.motion.t0 = time;
+        rec.motion.sample.pose = comPose(rec);
+        rec.motion.sample.linear_velocity.setZero();
+        rec.motion.sample.angular_velocity.setZero();
+        pose = rec.motion.sample.pose;
+    }
+    double* q = data_->qpos + rec.slots.qpos;
+    double* v = data_->qvel + rec.slots.dof;
+    const Vec3 w_local = pose.orientation.conjugate() * rec.motion.sample.angular_velocity;
+    for (int k = 0; k < 3; ++k) {
+        q[k] = pose.position[k];
+        v[k] = rec.motion.sample.linear_velocity[k];
+        v[3 + k] = w_local[k];
+    }
+    q[3] = pose.orientation.w();
+    q[4] = pose.orientation.x();
+    q[5] = pose.orientation.y();
+    q[6] = pose.orientation.z();
+}
+
+MujocoBackend::BodyRecord& MujocoBackend::record(int body, const char* what) {
+    return const_cast<BodyRecord&>(static_cast<const MujocoBackend*>(this)->record(body, what));
+}
+
 const MujocoBackend::BodyRecord& MujocoBackend::record(int body, const char* what) const {
     if (body < 0 || body >= bodyCount())
         throw InputError(std::string("mujoco: ") + what + ": no body with index " + std::to_string(body));
@@ -193,7 +265,7 @@ Pose MujocoBackend::comPose(const BodyRecord& rec) const {
 BodyState MujocoBackend::bodyState(int body) const {
     const BodyRecord& rec = record(body, "bodyState");
     BodyState s;
-    if (rec.is_static) {
+    if (rec.role == BodyRole::Real) {
         s.pose = rec.pose;
         return s;
     }
@@ -203,18 +275,26 @@ BodyState MujocoBackend::bodyState(int body) const {
     const double* v = data_->qvel + rec.slots.dof;
     s.linear_velocity = Vec3(v[0], v[1], v[2]);   // body frame origin = COM
     s.angular_velocity = com.orientation * Vec3(v[3], v[4], v[5]);   // local -> world
+    if (rec.role == BodyRole::Tracked) s.angular_velocity = rec.motion.sample.angular_velocity;   // no round trip
     return s;
 }
 
 void MujocoBackend::setBodyState(int body, const BodyState& state) {
-    const BodyRecord& rec = record(body, "setBodyState");
-    if (rec.is_static) return;
+    BodyRecord& rec = record(body, "setBodyState");
+    if (rec.role == BodyRole::Real) return;
     if (!finiteState(state)) {   // a tracker glitch: refused and counted, the body unchanged
         ++nonfinite_;
         return;
     }
     if (!(state.pose.orientation.norm() > 1e-9))   // finite but no rotation: the caller's mistake
         throw InputError("mujoco: setBodyState: body " + std::to_string(body) + ": expected a non-zero quaternion");
+    if (rec.role == BodyRole::Tracked) {   // a tracker sample: this pose now, these velocities from now on
+        rec.motion.t0 = time_;
+        rec.motion.sample = BodyState{Pose{state.pose.position, state.pose.orientation.normalized()},
+                                      state.linear_velocity, state.angular_velocity};
+        placeTracked(rec, time_);
+        return;
+    }
     Pose com{state.pose.position, state.pose.orientation.normalized()};
     com = com * rec.com_in_body;
     double* q = data_->qpos + rec.slots.qpos;
@@ -233,7 +313,7 @@ void MujocoBackend::setBodyState(int body, const BodyState& state) {
 
 void MujocoBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) {
     const BodyRecord& rec = record(body, "applyImpulse");
-    if (rec.is_static) return;
+    if (rec.role != BodyRole::Virtual) return;   // real and tracked bodies have infinite mass
     if (!impulse.allFinite() || !world_point.allFinite()) {
         ++nonfinite_;
         return;

@@ -4,7 +4,10 @@
 // (`com_in_body` maps it into the scene's body frame). Its free joint holds, in MuJoCo 2.2's
 // convention, qpos = (position [m], quaternion w x y z body -> world) and qvel = (linear velocity
 // of the body frame origin, here the COM, world [m/s]; angular velocity in the body's own frame
-// [rad/s]). Real bodies are static MuJoCo bodies and report their scene pose.
+// [rad/s]). Real bodies are static MuJoCo bodies and report their scene pose. Tracked bodies are
+// free bodies too (frame = scene body frame, trackedInertia() heavy): before each step their
+// weight is cancelled through qfrc_applied, after it their qpos and qvel are set to the tracker
+// motion's (tracked_motion.h), so MuJoCo's contacts see their velocity and never move them.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +17,7 @@
 #include "model_loader.h"
 #include "mujoco_config.h"
 #include "state_guard.h"
+#include "vroc/core/tracked_motion.h"
 #include "vroc/core/backend.h"
 
 namespace vroc::mujoco {
@@ -37,16 +41,21 @@ public:
 
 private:
     struct BodyRecord {
-        bool is_static = false;
+        BodyRole role = BodyRole::Virtual;
         Pose pose;                     ///< static: the scene pose
         Pose com_in_body;              ///< MuJoCo body frame -> scene body frame
         BodySlots slots;               ///< free joint addresses (virtual)
         double mass = 0.0;             ///< [kg]
         Vec3 principal_inertia = Vec3::Zero();   ///< [kg m^2] in the MuJoCo body frame
+        TrackedMotion motion;          ///< tracked: the last tracker sample (or the file's motion)
     };
 
     const BodyRecord& record(int body, const char* what) const;   ///< throws InputError if out of range
+    BodyRecord& record(int body, const char* what);
     void internalStep(double h, double end_time);
+    void mujocoStep(double h, double end_time);        ///< one checked mj_step (and its recovery)
+    void placeTracked(BodyRecord& rec, double time);   ///< qpos, qvel from the tracker motion at `time` [s]
+    void holdTrackedWeight();                          ///< qfrc_applied = -m g on each tracked body
     Pose comPose(const BodyRecord& rec) const;
 
     MujocoConfig config_;

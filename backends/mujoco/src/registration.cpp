@@ -24,6 +24,7 @@ BackendCapabilities capabilities() {
     c.hull = Support::Approximated;
     c.compound = Support::Exact;
     c.restitution = Support::Approximated;
+    c.tracked = Support::Approximated;
     c.friction = FrictionModel::Pyramid;
     c.continuous_collision = false;
     c.deterministic = true;
@@ -33,6 +34,11 @@ BackendCapabilities capabilities() {
         "(solref -K -B, K = 1/tc^2, tc = mujoco.contact_timeconst), inverting a spring-damper released at "
         "zero force; 1 m ball drop: first apex within 3 % of e^2 h (e = 0.5 and 1), slower impacts lose more "
         "(e = 0.5: second and third apex about -14 %); e below ~0.1 is floored by the damping cap";
+    c.notes["tracked"] =
+        "a free body 1e6 x heavier than the heaviest virtual body (not infinite), its weight cancelled and its qpos "
+        "and qvel set from the tracker after every step: contacts see its velocity (a mocap body's they would not), "
+        "a struck body recoils as from that mass (relative error ~1e-6) through the soft contact of the "
+        "restitution note";
     c.notes["hull"] =
         "the hull is exact (a MuJoCo mesh of its vertices, stored as floats), but MuJoCo 2.2 gives one contact "
         "point per mesh pair (MPR): a hull resting on a face rocks and sinks up to ~0.5 mm";
@@ -63,6 +69,8 @@ void registerBackend() {
         "messages: warnings are counted, not printed; an error (mju_error) is caught instead of ending the process",
         "buffer sizes: from the scene, nconmax = max(100, 8 x virtual geoms), njmax = max(500, 4 x nconmax) up to "
         "256 MB of constraint arrays, nstack 1e6 + 2000 (nv + njmax) (MuJoCo's default room of 100 contacts overflows on any box stack)",
+        "solver scale in scenes with tracked bodies: <statistic meaninertia> of the virtual bodies alone, so the "
+        "tracked bodies' 1e6 masses (see the tracked note) do not loosen the solver's tolerance",
     };
     info.settings = mujocoSettingSpecs();
     info.create = &create;

@@ -43,6 +43,9 @@ void ContactGenerator::nearCallback(void* self, dGeomID g1, dGeomID g2) {
 void ContactGenerator::narrowPhase(dGeomID g1, dGeomID g2) {
     const dBodyID b1 = dGeomGetBody(g1), b2 = dGeomGetBody(g2);
     if (b1 == b2) return;   // two real (body-less) geoms, or two parts of one compound
+    // Infinite mass against infinite mass (real or tracked on both sides) has no response.
+    const auto dynamic = [](dBodyID b) { return b && !dBodyIsKinematic(b); };
+    if (!dynamic(b1) && !dynamic(b2)) return;
     ++broadphase_pairs_;
     const int n = dCollide(g1, g2, max_contacts_, scratch_.data(), sizeof(dContactGeom));
     if (n <= 0) return;

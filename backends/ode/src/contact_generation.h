@@ -9,6 +9,9 @@
 // (dContactFDir1) follows the pair's relative tangential velocity at the contact point, so a
 // sliding contact's friction opposes its motion with mu x normal force whatever its direction.
 //
+// Pairs without a dynamic body (real or kinematic tracked bodies on both sides: infinite mass
+// against infinite mass) are skipped before the narrow phase.
+//
 // Normals: ODE's contact normal points into geom g1 (from g2 to g1); each point also carries it
 // "from a to b" for the scene bodies a < b (docs/events.md).
 #pragma once

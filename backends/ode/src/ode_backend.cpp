@@ -31,14 +31,15 @@ const OdeConfig& checked(const Scene& scene, const OdeConfig& config) {
             !(body.pose.orientation.norm() > 0.0))
             throw InputError(where(scene, body) + "expected a finite pose with a non-zero quaternion");
         if (body.isStatic()) continue;
+        if (!body.linear_velocity.allFinite() || !body.angular_velocity.allFinite())
+            throw InputError(where(scene, body) + "expected finite initial velocities");
+        if (body.isTracked()) continue;   // infinite mass: no mass properties
         const MassProperties& mp = body.mass_properties;
         const Mat3 sym = 0.5 * (mp.inertia + mp.inertia.transpose());
         if (!(mp.mass > 0.0) || !std::isfinite(mp.mass) || !mp.inertia.allFinite() || !mp.center_of_mass.allFinite() ||
             sym.llt().info() != Eigen::Success)
             throw InputError(where(scene, body) +
                              "a virtual body needs a positive finite mass and a positive definite inertia");
-        if (!body.linear_velocity.allFinite() || !body.angular_velocity.allFinite())
-            throw InputError(where(scene, body) + "expected finite initial velocities");
     }
     return config;
 }
@@ -84,10 +85,25 @@ OdeBackend::~OdeBackend() {
 
 void OdeBackend::addBody(int index, const Body& body) {
     BodyRecord rec;
+    rec.role = body.role;
     const Quat q = body.pose.orientation.normalized();
     if (body.isStatic()) {
         rec.static_pose = Pose{body.pose.position, q};
         shapes_.place(space_.get(), body.shape, rec.static_pose, index);
+        bodies_.push_back(rec);
+        return;
+    }
+    if (body.isTracked()) {
+        rec.body = dBodyCreate(world_.get());
+        dBodySetKinematic(rec.body);   // ODE's own kinematic body: moved by its velocity, never by forces
+        dBodySetGravityMode(rec.body, 0);
+        dBodySetAutoDisableFlag(rec.body, 0);
+        dBodySetData(rec.body, reinterpret_cast<void*>(static_cast<std::intptr_t>(index)));
+        shapes_.attach(space_.get(), rec.body, body.shape, Pose::identity(), index);
+        rec.motion.sample.pose = {body.pose.position, q};
+        rec.motion.sample.linear_velocity = body.linear_velocity;
+        rec.motion.sample.angular_velocity = body.angular_velocity;
+        placeTracked(rec, 0.0);
         bodies_.push_back(rec);
         return;
     }
@@ -159,6 +175,10 @@ void OdeBackend::internalStep(double h, double end_time) {
     }
     dJointGroupEmpty(contact_group_.get());
     restoreNonfinite();
+    // ODE moved the kinematic bodies by their velocities; put them exactly where the tracker
+    // motion has them at the step's end (no drift from the integration of the rotation).
+    for (BodyRecord& rec : bodies_)
+        if (rec.role == BodyRole::Tracked) placeTracked(rec, end_time);
 
     // The collision pass at the new poses: the pairs touching now, and the next step's contacts.
     contacts_.collide(space_.get());
@@ -168,9 +188,30 @@ void OdeBackend::internalStep(double h, double end_time) {
     events_.afterStep(solved, touching, end_time);
 }
 
+// The kinematic body at its motion's pose and velocities. A pose that overflows (a finite but
+// huge velocity) is numerical trouble: counted, and the body stays where it was, at rest.
+void OdeBackend::placeTracked(BodyRecord& rec, double time) {
+    ComState s;
+    Pose pose = rec.motion.poseAt(time);
+    if (!pose.position.allFinite() || !pose.orientation.coeffs().allFinite()) {
+        ++nonfinite_;
+        rec.motion.t0 = time;
+        rec.motion.sample.pose = Pose{rec.last_good.position, rec.last_good.orientation};
+        rec.motion.sample.linear_velocity.setZero();
+        rec.motion.sample.angular_velocity.setZero();
+        pose = rec.motion.sample.pose;
+    }
+    s.position = pose.position;
+    s.orientation = pose.orientation;
+    s.linear_velocity = rec.motion.sample.linear_velocity;
+    s.angular_velocity = rec.motion.sample.angular_velocity;
+    setComState(rec, s);
+    rec.last_good = s;
+}
+
 void OdeBackend::restoreNonfinite() {
     for (BodyRecord& rec : bodies_) {
-        if (!rec.body) continue;
+        if (!rec.body || rec.role == BodyRole::Tracked) continue;   // tracked: placeTracked
         const ComState s = comState(rec);
         if (finite(s.position, s.orientation, s.linear_velocity, s.angular_velocity)) {
             rec.last_good = s;
@@ -237,6 +278,14 @@ void OdeBackend::setBodyState(int body, const BodyState& state) {
     }
     if (q.norm() == 0.0)
         throw InputError("ode: setBodyState: body " + std::to_string(body) + ": expected a non-zero quaternion");
+    if (rec.role == BodyRole::Tracked) {   // a tracker sample: this pose now, these velocities from now on
+        rec.motion.t0 = time_;
+        rec.motion.sample = BodyState{Pose{state.pose.position, q.normalized()}, state.linear_velocity,
+                                      state.angular_velocity};
+        placeTracked(rec, time_);
+        contacts_current_ = false;
+        return;
+    }
     ComState s;
     s.orientation = q.normalized();
     s.position = state.pose.position + s.orientation * rec.com;
@@ -249,7 +298,7 @@ void OdeBackend::setBodyState(int body, const BodyState& state) {
 
 void OdeBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) {
     BodyRecord& rec = record(body, "applyImpulse");
-    if (!rec.body) return;
+    if (rec.role != BodyRole::Virtual) return;   // real and tracked bodies have infinite mass
     if (!impulse.allFinite() || !world_point.allFinite()) {
         ++nonfinite_;   // counted and ignored
         return;

@@ -6,6 +6,10 @@
 //    ODE keeps a full inertia tensor about the COM, so no principal frame is needed:
 //    T_world_ode = T_world_body * (c, identity).
 // Real bodies have no ODE body: their geoms sit in the world at the scene pose.
+// Tracked bodies are ODE kinematic bodies (dBodySetKinematic: infinite mass, their velocity in the
+// contact rows), frame = scene body frame (COM at the origin), put at the tracker motion's pose
+// and velocities after every step (tracked_motion.h); the contact callback skips pairs with no
+// dynamic body (real-real, tracked-real, tracked-tracked).
 //
 // One internal step: contact joints from the contacts found at the step's start, dWorldQuickStep
 // (or dWorldStep), joint feedback read, joints emptied, non-finite bodies restored, then the
@@ -24,6 +28,7 @@
 #include "ode_config.h"
 #include "ode_runtime.h"
 #include "shape_mapping.h"
+#include "vroc/core/tracked_motion.h"
 #include "vroc/core/backend.h"
 
 namespace vroc::ode {
@@ -61,6 +66,8 @@ private:
         double mass = 0.0;                    ///< [kg]
         Mat3 inertia = Mat3::Zero();          ///< [kg m^2] about the COM, body axes (= ODE body axes)
         ComState last_good;                   ///< after the last internal step that left it finite
+        BodyRole role = BodyRole::Virtual;
+        TrackedMotion motion;                 ///< tracked: the last tracker sample (or the file's motion)
     };
 
     BodyRecord& record(int body, const char* what);   ///< throws InputError if out of range
@@ -69,6 +76,7 @@ private:
     void restoreNonfinite();
     ComState comState(const BodyRecord& rec) const;
     void setComState(BodyRecord& rec, const ComState& s);
+    void placeTracked(BodyRecord& rec, double time);   ///< kinematic body at its motion's pose at `time` [s]
 
     OdeConfig config_;
     // Declaration order is destruction order reversed: the contact group, then the space with

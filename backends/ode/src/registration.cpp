@@ -23,6 +23,7 @@ BackendCapabilities capabilities() {
     c.hull = Support::Approximated;
     c.compound = Support::Exact;
     c.restitution = Support::Approximated;
+    c.tracked = Support::Exact;   // dBodySetKinematic: infinite mass, its velocity in the contact rows
     c.friction = FrictionModel::Pyramid;
     c.continuous_collision = false;
     c.deterministic = true;

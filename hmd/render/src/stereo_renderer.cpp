@@ -86,8 +86,8 @@ StereoRenderer::StereoRenderer(const Scene& scene, const hmd::StereoRig& rig, co
     int virtual_index = 0;
     for (const Body& body : scene.bodies) {
         impl_->meshes.push_back(tessellate(body.shape, settings.sphere_slices, settings.sphere_stacks));
-        impl_->is_real.push_back(body.isStatic());
-        impl_->colors.push_back(body.isStatic() ? std::array<float, 3>{0, 0, 0} : virtualColor(virtual_index++));
+        impl_->is_real.push_back(!body.isDynamic());   // real objects, tracked ones too: depth + wireframe
+        impl_->colors.push_back(!body.isDynamic() ? std::array<float, 3>{0, 0, 0} : virtualColor(virtual_index++));
     }
     const hmd::LensDistortion lens(rig.settings().k1, rig.settings().k2);
     if (!lens.isIdentity()) impl_->prewarp = PrewarpMap(lens, settings.eye_width, settings.eye_height);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vroc::plugin_sdk {
 namespace {
@@ -53,6 +54,14 @@ MotionState throwArc(const MotionParams& p, double t) {
             tau < t_release};
 }
 
+MotionState line(const MotionParams& p, double t) {
+    const double end = p.duration > 0 ? p.duration : std::numeric_limits<double>::infinity();
+    const bool moving = t >= 0 && t < end;
+    const double travelled = std::clamp(t, 0.0, end);
+    return {p.center + p.velocity * travelled, p.orientation,
+            moving ? p.velocity : Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), t >= p.press_at};
+}
+
 MotionState headTurn(const MotionParams& p, double t) {
     const double f = p.speed / (2 * kPi * p.amplitude);  // peak rate A*2*pi*f == speed
     const double yaw = p.amplitude * std::sin(2 * kPi * f * t);
@@ -69,7 +78,7 @@ bool parseMotionKind(const std::string& text, MotionKind& kind) {
     } kNames[] = {{"static", MotionKind::Static},     {"circle", MotionKind::Circle},
                   {"figure8", MotionKind::FigureEight}, {"figure-eight", MotionKind::FigureEight},
                   {"throw", MotionKind::Throw},       {"head-turn", MotionKind::HeadTurn},
-                  {"spin", MotionKind::Spin}};
+                  {"spin", MotionKind::Spin},         {"line", MotionKind::Line}};
     for (const auto& entry : kNames)
         if (text == entry.name) {
             kind = entry.kind;
@@ -89,6 +98,7 @@ MotionState evaluateMotion(const MotionParams& p, double t) {
         case MotionKind::FigureEight: return figureEight(p, t);
         case MotionKind::Throw: return throwArc(p, t);
         case MotionKind::HeadTurn: return headTurn(p, t);
+        case MotionKind::Line: return line(p, t);
         case MotionKind::Spin:
             return {p.center, about(Eigen::Vector3d::UnitZ(), p.speed * t), Eigen::Vector3d::Zero(),
                     Eigen::Vector3d(0, 0, p.speed)};

@@ -15,10 +15,10 @@ struct MotionState {
     Eigen::Quaterniond orientation;    ///< sensor -> base
     Eigen::Vector3d linear_velocity;   ///< [m/s] base frame
     Eigen::Vector3d angular_velocity;  ///< [rad/s] base frame
-    bool button = false;               ///< button 0 (held during the throw's wind-up)
+    bool button = false;               ///< button 0 (held during the throw's wind-up, from press_at in a line)
 };
 
-enum class MotionKind { Static, Circle, FigureEight, Throw, HeadTurn, Spin };
+enum class MotionKind { Static, Circle, FigureEight, Throw, HeadTurn, Spin, Line };
 
 struct MotionParams {
     MotionKind kind = MotionKind::Circle;
@@ -27,6 +27,12 @@ struct MotionParams {
     double period = 2.0;                    ///< [s] one cycle (circle, figure-eight, throw)
     double speed = 3.4906585039886591;      ///< head-turn peak / spin rate [rad/s] (200 deg/s); throw release speed [m/s]
     double amplitude = 0.5235987755982988;  ///< [rad] head-turn yaw amplitude (30 deg)
+    // Line: from `center` at t = 0 with constant `velocity` until `duration`, then at rest there;
+    // at rest at `center` before t = 0. Orientation fixed. Button 0 held for t >= press_at.
+    Eigen::Vector3d velocity{0.0, 0.0, 0.0};                    ///< [m/s] base frame
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< sensor -> base, fixed
+    double press_at = 0.0;                                      ///< [s] button 0 pressed from then on
+    double duration = 0.0;                                      ///< [s] of motion; 0 = unbounded
 };
 
 /// "circle" -> MotionKind::Circle etc.; false if unknown.

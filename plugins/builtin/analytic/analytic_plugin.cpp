@@ -14,9 +14,11 @@ namespace vroc::plugin_sdk {
 namespace {
 
 constexpr const char* kHelp =
-    "motion=circle: static|circle|figure8|throw|head-turn|spin; x,y,z=0,0,1.2: centre [m]; "
-    "radius=0.3 [m]; period=2 [s]; speed_deg=200: head-turn peak / spin rate [deg/s]; "
-    "amplitude_deg=30: head-turn amplitude; throw_speed=3: release speed [m/s]; latency=0 [s]; "
+    "motion=circle: static|circle|figure8|throw|head-turn|spin|line; x,y,z=0,0,1.2: centre (line: start) "
+    "[m]; radius=0.3 [m]; period=2 [s]; speed_deg=200: head-turn peak / spin rate [deg/s]; "
+    "amplitude_deg=30: head-turn amplitude; throw_speed=3: release speed [m/s]; line only: "
+    "vx,vy,vz=0,0,0 [m/s], qx,qy,qz,qw=0,0,0,1 fixed orientation, press_at=0: button 0 held from [s], "
+    "duration=0: seconds of motion, then at rest (0 = unbounded); latency=0 [s]; "
     "rate=0: measurements per second (0 = continuous); noise_pos=0 [m]; noise_rot=0 [rad]; "
     "velocities=1: report velocities";
 
@@ -98,7 +100,8 @@ std::unique_ptr<Device> create(uint32_t, Options& o) {
     MotionParams m;
     const std::string kind = o.getString("motion", "circle");
     if (!parseMotionKind(kind, m.kind))
-        throw OptionError("analytic: option motion='" + kind + "': expected static, circle, figure8, throw, head-turn or spin");
+        throw OptionError("analytic: option motion='" + kind +
+                          "': expected static, circle, figure8, throw, head-turn, spin or line");
     m.center = {o.getDouble("x", 0.0), o.getDouble("y", 0.0), o.getDouble("z", 1.2)};
     m.radius = o.getDouble("radius", m.kind == MotionKind::Throw ? 0.6 : 0.3, 1e-6, 1e6);
     m.period = o.getDouble("period", 2.0, 1e-3, 1e6);
@@ -107,6 +110,17 @@ std::unique_ptr<Device> create(uint32_t, Options& o) {
                                           : o.getDouble("speed_deg", 200.0, -1e6, 1e6) * kDeg;
     if (m.kind == MotionKind::Throw) o.getDouble("speed_deg", 0.0);  // accepted, unused
     else o.getDouble("throw_speed", 0.0);
+    if (m.kind == MotionKind::Line) {  // read only for a line, so a stray vx elsewhere is an unknown option
+        m.velocity = {o.getDouble("vx", 0.0), o.getDouble("vy", 0.0), o.getDouble("vz", 0.0)};
+        const Eigen::Vector4d q(o.getDouble("qx", 0.0), o.getDouble("qy", 0.0), o.getDouble("qz", 0.0),
+                                o.getDouble("qw", 1.0));
+        if (std::fabs(q.norm() - 1.0) > 0.01)
+            throw OptionError("analytic: options qx,qy,qz,qw: expected a unit quaternion [x, y, z, w] (norm " +
+                              std::to_string(q.norm()) + ")");
+        m.orientation = Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized();
+        m.press_at = o.getDouble("press_at", 0.0);
+        m.duration = o.getDouble("duration", 0.0, 0.0, 1e9);
+    }
     TrackerModel t;
     t.latency_ns = nsOf(o.getDouble("latency", 0.0, 0.0, 10.0));
     const double rate = o.getDouble("rate", 0.0, 0.0, 1e6);
@@ -117,9 +131,9 @@ std::unique_ptr<Device> create(uint32_t, Options& o) {
     return std::make_unique<AnalyticDevice>(m, t);
 }
 
-const PluginDefinition kDefinition = {"analytic", "1.0.0",
-                                      "scripted closed-form motion (circle, figure-eight, throw, head turn, spin)", 1,
-                                      describe, create};
+const PluginDefinition kDefinition = {
+    "analytic", "1.1.0", "scripted closed-form motion (circle, figure-eight, throw, head turn, spin, line)", 1,
+    describe, create};
 
 }  // namespace
 }  // namespace vroc::plugin_sdk

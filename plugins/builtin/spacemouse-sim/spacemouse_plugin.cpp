@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `spacemouse-sim`: a simulated six-axis 3D mouse with buttons (the input device of the 1995
-// VROC), driven by a script of deflections instead of a hand. The real device could be served by
-// the same plugin through libspnav/spacenavd (spnav_open, spnav_poll_event); that dependency is
-// not built here (docs/plugin-abi.md).
+// VROC), driven by a script of deflections instead of a hand. The real device is the `spacenav`
+// plugin (libspnav/spacenavd), which integrates its events with the same AnalogFly code.
 #include <fstream>
 #include <sstream>
 

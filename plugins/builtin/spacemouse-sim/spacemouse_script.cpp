@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "analog_fly.h"
 #include "options.h"
-#include "pose_math.h"
 
 namespace vroc::plugin_sdk {
 
@@ -68,13 +68,13 @@ MouseScript::MouseScript(std::vector<MouseSegment> segments, const Eigen::Vector
 }
 
 MouseState MouseScript::advance(const MouseState& from, const MouseSegment& s, double dt) const {
-    const Eigen::Vector3d v = max_speed_ * Eigen::Vector3d(s.axes[0], s.axes[1], s.axes[2]);
-    const Eigen::Vector3d w_body = max_rate_ * Eigen::Vector3d(s.axes[3], s.axes[4], s.axes[5]);
+    const AnalogFly fly{max_speed_, max_rate_};
     MouseState out;
-    out.position = from.position + v * dt;
-    out.orientation = (from.orientation * expRotation(w_body * dt)).normalized();
-    out.linear_velocity = v;
-    out.angular_velocity = out.orientation * w_body;  // body rate is constant, so world rate turns with q
+    out.position = from.position;
+    out.orientation = from.orientation;
+    fly.advance(out.position, out.orientation, s.axes, dt);
+    out.linear_velocity = fly.linearVelocity(s.axes);
+    out.angular_velocity = fly.angularVelocity(out.orientation, s.axes);  // body rate constant: world rate turns with q
     out.axes = s.axes;
     out.buttons = s.buttons;
     return out;

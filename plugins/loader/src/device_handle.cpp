@@ -38,6 +38,46 @@ PoseResult DeviceHandle::reject(const std::string& why, int32_t code) {
     return result;
 }
 
+bool DeviceHandle::acceptsForce() const {
+    // The validator has confirmed that an ABI-2 table is large enough and that a device declaring
+    // force output has send_force; the check of the pointer is belt and braces.
+    return plugin_.abi_version >= 2 && (description().caps & VROC_CAP_FORCE_OUTPUT) &&
+           plugin_.api->struct_size >= VROC_DEVICE_API_SIZE_V2 && plugin_.api->send_force;
+}
+
+bool DeviceHandle::rejectForce(const std::string& why) {
+    if (rejected_forces_.fetch_add(1) == 0)
+        host_.log(VROC_LOG_WARNING, plugin_.name,
+                  "plugin " + plugin_.name + ": force not sent: " + why + " (further failures are only counted)");
+    return false;
+}
+
+bool DeviceHandle::sendForce(uint32_t sensor, int64_t time_ns, const Eigen::Vector3d& force_N,
+                             const Eigen::Vector3d& torque_Nm) {
+    if (!acceptsForce()) return false;
+    try {
+        VrocForceCommand command{};
+        command.struct_type = VROC_STRUCT_FORCE_COMMAND;
+        command.struct_version = 1;
+        command.struct_size = sizeof command;
+        command.time_ns = time_ns;
+        command.sensor = sensor;
+        for (int i = 0; i < 3; ++i) {
+            command.force[i] = force_N[i];
+            command.torque[i] = torque_Nm[i];
+        }
+        if (std::string why = validateForceCommand(command, description().sensor_count); !why.empty())
+            return rejectForce(why);
+        const int32_t rc = plugin_.api->send_force(handle_, &command);
+        if (rc < 0) return rejectForce("send_force failed (" + std::to_string(rc) + "): " + lastError());
+        sent_forces_.fetch_add(1);
+        return true;
+    } catch (...) {  // logging or string allocation failed: still never throw
+        rejected_forces_.fetch_add(1);
+        return false;
+    }
+}
+
 PoseResult DeviceHandle::pose(uint32_t sensor, int64_t at_time_ns) {
     VrocPoseSample raw{};
     raw.struct_type = VROC_STRUCT_POSE_SAMPLE;

@@ -75,6 +75,9 @@ void defaultLog(int32_t severity, const std::string& plugin, const std::string& 
 PluginHost::PluginHost(HostOptions options)
     : options_(std::move(options)), version_(std::string("vroc ") + VROC_VERSION_STRING), context_(new Context) {
     if (!options_.log) options_.log = defaultLog;
+    if (options_.abi_max < VROC_PLUGIN_ABI_VERSION_MIN || options_.abi_max > VROC_PLUGIN_ABI_VERSION)
+        throw InputError("plugin host: abi_max " + std::to_string(options_.abi_max) + " is outside " +
+                         std::to_string(VROC_PLUGIN_ABI_VERSION_MIN) + ".." + std::to_string(VROC_PLUGIN_ABI_VERSION));
     dirs_ = pluginSearchDirs(options_.search_dirs, options_.use_environment, options_.use_default_dirs);
     context_->services = {VROC_STRUCT_HOST_SERVICES, 1, sizeof(VrocHostServices), context_,
                           serviceLog, serviceNow, serviceLoad};
@@ -139,8 +142,8 @@ const LoadedPlugin& PluginHost::addStatic(const std::string& label, VrocNegotiat
 }
 
 const LoadedPlugin& PluginHost::negotiateAndKeep(const std::string& path, void* library, VrocNegotiateFn negotiate) {
-    VrocHostInfo host{VROC_STRUCT_HOST_INFO, 1, sizeof(VrocHostInfo), VROC_PLUGIN_ABI_VERSION,
-                      VROC_PLUGIN_ABI_VERSION, version_.c_str(), &context_->services};
+    VrocHostInfo host{VROC_STRUCT_HOST_INFO, 1, sizeof(VrocHostInfo), VROC_PLUGIN_ABI_VERSION_MIN,
+                      options_.abi_max, version_.c_str(), &context_->services};
     VrocPluginInfo info{};
     info.struct_type = VROC_STRUCT_PLUGIN_INFO;
     info.struct_version = 1;

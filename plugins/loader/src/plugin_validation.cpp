@@ -8,8 +8,11 @@
 namespace vroc::plugins {
 namespace {
 
-// The v1 table ends with set_force: a plugin must provide at least that much.
-constexpr uint64_t kRequiredApiSize = offsetof(VrocDeviceApi, set_force) + sizeof(void*);
+// The table a plugin must provide for the ABI version it chose: ABI 1 ends with set_force, ABI 2
+// with send_force.
+uint64_t requiredApiSize(uint32_t abi_version) {
+    return abi_version >= 2 ? VROC_DEVICE_API_SIZE_V2 : VROC_DEVICE_API_SIZE_V1;
+}
 
 bool validName(const char* name) {
     if (!name || !*name) return false;
@@ -18,14 +21,15 @@ bool validName(const char* name) {
     return true;
 }
 
-std::string checkTable(const VrocDeviceApi* api) {
+std::string checkTable(const VrocDeviceApi* api, uint32_t abi_version) {
     if (!api) return "null function table (VrocPluginInfo.api)";
     if (api->struct_type != VROC_STRUCT_DEVICE_API)
         return "function table has struct_type " + std::to_string(api->struct_type) + ", expected " +
                std::to_string(VROC_STRUCT_DEVICE_API);
-    if (api->struct_size < kRequiredApiSize)
-        return "function table is too small (struct_size " + std::to_string(api->struct_size) +
-               " bytes, host needs at least " + std::to_string(kRequiredApiSize) + ")";
+    if (api->struct_size < requiredApiSize(abi_version))
+        return "function table is too small for ABI " + std::to_string(abi_version) + " (struct_size " +
+               std::to_string(api->struct_size) + " bytes, host needs at least " +
+               std::to_string(requiredApiSize(abi_version)) + ")";
     const struct {
         const char* name;
         bool present;
@@ -38,7 +42,7 @@ std::string checkTable(const VrocDeviceApi* api) {
     return {};
 }
 
-std::string describeDevice(const VrocDeviceApi& api, uint32_t index, DeviceDescription& out) {
+std::string describeDevice(const VrocDeviceApi& api, uint32_t abi_version, uint32_t index, DeviceDescription& out) {
     VrocDeviceDesc desc{};
     desc.struct_type = VROC_STRUCT_DEVICE_DESC;
     desc.struct_version = 1;
@@ -49,7 +53,12 @@ std::string describeDevice(const VrocDeviceApi& api, uint32_t index, DeviceDescr
     if (desc.axis_count > VROC_MAX_AXES) return which + "axis_count " + std::to_string(desc.axis_count) + " > 8";
     if (desc.button_count > 64) return which + "button_count " + std::to_string(desc.button_count) + " > 64";
     if ((desc.caps & VROC_CAP_POSE_SOURCE) && desc.sensor_count == 0) return which + "pose source with no sensors";
-    if ((desc.caps & VROC_CAP_FORCE_OUTPUT) && !api.set_force) return which + "force output declared but set_force is null";
+    // Force output needs the function of the chosen ABI (send_force exists only in an ABI-2 table,
+    // whose size checkTable has already confirmed).
+    if ((desc.caps & VROC_CAP_FORCE_OUTPUT) && abi_version >= 2 && !api.send_force)
+        return which + "force output declared but send_force is null";
+    if ((desc.caps & VROC_CAP_FORCE_OUTPUT) && abi_version == 1 && !api.set_force)
+        return which + "force output declared but set_force is null (ABI 1)";
     if (!std::isfinite(desc.nominal_rate_hz) || desc.nominal_rate_hz < 0) return which + "nominal_rate_hz is not a finite rate";
     out = {desc.kind, desc.sensor_count, desc.button_count, desc.axis_count, desc.caps, desc.nominal_rate_hz,
            desc.nominal_latency_ns, desc.name ? desc.name : "", desc.options_help ? desc.options_help : ""};
@@ -72,7 +81,7 @@ std::string validatePluginInfo(const VrocPluginInfo& info, uint32_t abi_min, uin
     if (info.abi_version < abi_min || info.abi_version > abi_max)
         return "ABI version " + std::to_string(info.abi_version) + " not supported (host accepts " +
                std::to_string(abi_min) + ".." + std::to_string(abi_max) + ")";
-    if (std::string why = checkTable(info.api); !why.empty()) return why;
+    if (std::string why = checkTable(info.api, info.abi_version); !why.empty()) return why;
     if (!validName(info.name)) return "plugin name is missing or not [a-z0-9-_]";
     if (!info.version) return "plugin version string is null";
     if (info.device_count == 0) return "plugin declares no devices";
@@ -84,7 +93,7 @@ std::string validatePluginInfo(const VrocPluginInfo& info, uint32_t abi_min, uin
     out.devices.assign(info.device_count, {});
     out.capabilities = 0;
     for (uint32_t i = 0; i < info.device_count; ++i) {
-        if (std::string why = describeDevice(*info.api, i, out.devices[i]); !why.empty()) return why;
+        if (std::string why = describeDevice(*info.api, info.abi_version, i, out.devices[i]); !why.empty()) return why;
         out.capabilities |= out.devices[i].caps;
     }
     return {};
@@ -110,6 +119,16 @@ std::string validatePoseSample(VrocPoseSample& s, uint32_t sensor, uint32_t sens
         if (std::string why = finiteCheck("linear velocity", s.linear_velocity, 3); !why.empty()) return why;
     if (s.flags & VROC_POSE_ANGULAR_VELOCITY_VALID)
         if (std::string why = finiteCheck("angular velocity", s.angular_velocity, 3); !why.empty()) return why;
+    return {};
+}
+
+std::string validateForceCommand(const VrocForceCommand& c, uint32_t sensor_count) {
+    // A force-only device may have no pose sensors; its sensor 0 is the handle itself.
+    const uint32_t sensors = sensor_count > 0 ? sensor_count : 1;
+    if (c.sensor >= sensors)
+        return "sensor " + std::to_string(c.sensor) + " out of range (device has " + std::to_string(sensors) + ")";
+    if (std::string why = finiteCheck("force", c.force, 3); !why.empty()) return why;
+    if (std::string why = finiteCheck("torque", c.torque, 3); !why.empty()) return why;
     return {};
 }
 

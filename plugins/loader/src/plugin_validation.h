@@ -15,4 +15,7 @@ std::string validatePluginInfo(const VrocPluginInfo& info, uint32_t abi_min, uin
 /// Checks a sample a plugin returned for `sensor`; normalises the quaternion. "" if acceptable.
 std::string validatePoseSample(VrocPoseSample& sample, uint32_t sensor, uint32_t sensor_count);
 
+/// Checks a force command before it is handed to a plugin (finite, sensor in range). "" if acceptable.
+std::string validateForceCommand(const VrocForceCommand& command, uint32_t sensor_count);
+
 }  // namespace vroc::plugins

@@ -102,6 +102,85 @@ int addHullCuboid(Scene& scene, const std::string& name, const Vec3& half, doubl
     return push(scene, std::move(b));
 }
 
+int addTrackedBox(Scene& scene, const std::string& name, const Vec3& half, const Pose& pose, const Vec3& velocity,
+                  const Vec3& angular_velocity, int material) {
+    Body b;
+    b.name = name;
+    b.role = BodyRole::Tracked;
+    b.material = material;
+    b.shape = Shape::box(half);
+    b.pose = pose;
+    b.linear_velocity = velocity;
+    b.angular_velocity = angular_velocity;
+    return push(scene, std::move(b));
+}
+
+TrackedStrike trackedStrike(double e, double speed, double gap) {
+    TrackedStrike s;
+    s.scene = emptyScene(e, 0.0);
+    s.scene.name = "tracked_strike";
+    s.scene.gravity = Vec3::Zero();
+    s.ball = addBall(s.scene, "ball", 0.1, 1.0, Vec3::Zero());
+    s.plate_start = Vec3(-0.1 - gap - 0.05, 0, 0);
+    s.plate = addTrackedBox(s.scene, "plate", Vec3(0.05, 0.5, 0.5), Pose{s.plate_start, Quat::Identity()},
+                            Vec3(speed, 0, 0));
+    return s;
+}
+
+TrackedStrike staticStrike(double e, double speed, double gap) {
+    TrackedStrike s = trackedStrike(e, speed, gap);
+    s.scene.name = "static_strike";
+    Body& plate = s.scene.bodies[static_cast<std::size_t>(s.plate)];
+    plate.role = BodyRole::Real;
+    plate.linear_velocity.setZero();
+    s.scene.bodies[static_cast<std::size_t>(s.ball)].linear_velocity = Vec3(-speed, 0, 0);
+    return s;
+}
+
+std::vector<LiftSample> trackedLift(const BackendFactory& make, double speed, double dt, int frames,
+                                    const Overrides& overrides) {
+    Scene scene = emptyScene(0.2, 0.6);
+    scene.name = "tracked_lift";
+    const int platform = addTrackedBox(scene, "platform", Vec3(0.5, 0.5, 0.05), Pose{Vec3(0, 0, -0.05), Quat::Identity()},
+                                       Vec3(0, 0, speed));
+    const int box = addBox(scene, "box", Vec3(0.1, 0.1, 0.1), 2.0, Vec3(0, 0, 0.1005));
+    auto backend = make(scene, overrides);
+    std::vector<LiftSample> out;
+    for (int f = 0; f < frames; ++f) {
+        backend->stepFrame(dt);
+        const BodyState b = backend->bodyState(box);
+        out.push_back({b.pose.position.z() - 0.1 - (backend->bodyState(platform).pose.position.z() + 0.05),
+                       b.linear_velocity.z()});
+    }
+    return out;
+}
+
+StrikeRun runStrike(Backend& backend, const TrackedStrike& strike, double plate_speed, double dt, int frames) {
+    const auto gap = [&] {
+        return backend.bodyState(strike.ball).pose.position.x() - 0.1 -
+               (backend.bodyState(strike.plate).pose.position.x() + 0.05);
+    };
+    const Vec3 v(plate_speed, 0, 0);
+    const Vec3 ball0 = backend.bodyState(strike.ball).linear_velocity;
+    StrikeRun r;
+    bool moved = false;
+    for (int f = 0; f < frames; ++f) {
+        const double before = gap();
+        backend.stepFrame(dt);
+        r.events += static_cast<int>(backend.takeEvents().size());
+        if (!moved && backend.bodyState(strike.ball).linear_velocity != ball0) {
+            moved = true;
+            r.contact_gap = before;
+        }
+        const BodyState p = backend.bodyState(strike.plate);
+        r.plate_error = std::max(r.plate_error, (p.pose.position - (strike.plate_start + v * backend.time())).norm());
+        r.plate_velocity_error = std::max(r.plate_velocity_error, (p.linear_velocity - v).norm());
+    }
+    r.ball_velocity = backend.bodyState(strike.ball).linear_velocity;
+    r.ball_angular_velocity = backend.bodyState(strike.ball).angular_velocity;
+    return r;
+}
+
 std::unique_ptr<Backend> makeRegistered(const std::string& name, const Scene& scene, const Overrides& overrides) {
     const BackendInfo& info = BackendRegistry::global().require(name);
     return info.create(scene, resolveSettings(info.settings, overrides));

@@ -34,6 +34,38 @@ int addHullCuboid(Scene& scene, const std::string& name, const Vec3& half, doubl
 /// Solid cuboid inertia about its centre, in its own axes [kg m^2].
 Mat3 cuboidInertia(const Vec3& half, double mass);
 
+/// Tracked box [half extents m] (scene.h: infinite mass, mass properties zero) at `pose`, moving at
+/// `velocity` [m/s] of its origin and `angular_velocity` [rad/s], world frame.
+int addTrackedBox(Scene& scene, const std::string& name, const Vec3& half, const Pose& pose, const Vec3& velocity,
+                  const Vec3& angular_velocity = Vec3::Zero(), int material = 0);
+
+/// A plate strikes a ball: no gravity, ball r = 0.1 m, 1 kg, at rest at the origin; a tracked plate
+/// (box, half extents 0.05 x 0.5 x 0.5 m) on the -x side, its +x face `gap` [m] from the ball,
+/// moving at +x `speed` [m/s]; one material, restitution e, friction 0. The closed form: the ball
+/// leaves at (1 + e) speed along +x and the plate keeps p(t) = p0 + (speed, 0, 0) t.
+struct TrackedStrike {
+    Scene scene;
+    int ball = -1, plate = -1;
+    Vec3 plate_start = Vec3::Zero();   ///< [m] plate origin at t = 0
+};
+TrackedStrike trackedStrike(double e, double speed, double gap);
+/// The same strike seen from the plate: the plate is a real (static) body and the ball flies at
+/// -x `speed` towards it. By Galilean invariance the ball's velocity after it, plus `speed`, is the
+/// tracked strike's.
+TrackedStrike staticStrike(double e, double speed, double gap);
+/// What a strike run measured.
+struct StrikeRun {
+    Vec3 ball_velocity = Vec3::Zero();         ///< [m/s] after the last frame
+    Vec3 ball_angular_velocity = Vec3::Zero(); ///< [rad/s] after the last frame
+    double contact_gap = 0.0;    ///< [m] face-to-ball gap at the start of the frame in which the ball first moved
+    double plate_error = 0.0;    ///< [m] largest |plate origin - (p0 + v t)| over the frames
+    double plate_velocity_error = 0.0;   ///< [m/s] largest |plate velocity - v| over the frames
+    int events = 0;              ///< collision events reported
+};
+/// Steps `backend` (made for `strike.scene`) `frames` frames of `dt` [s]; the plate's prescribed
+/// velocity is (plate_speed, 0, 0) (0 for staticStrike).
+StrikeRun runStrike(Backend& backend, const TrackedStrike& strike, double plate_speed, double dt, int frames);
+
 /// `key=value` setting overrides for a backend.
 using Overrides = std::vector<std::pair<std::string, std::string>>;
 
@@ -73,5 +105,17 @@ DropResult ballDrop(const BackendFactory& make, double e, const Overrides& overr
                     ApexReading reading = ApexReading::FrameMax);
 /// One Markdown row: | e | label | events | apex n (deviation from e^(2n) h) ... | for 5 apexes.
 void printApexRow(double e, const char* label, const DropResult& r);
+
+/// A lift: gravity -9.81 z; a tracked platform (box, half extents 0.5 x 0.5 x 0.05 m, top face at
+/// z = 0) rising at `speed` [m/s]; a 0.2 m box of 2 kg resting on it (released 0.5 mm above);
+/// one material, restitution 0.2, friction 0.6. The box should ride on the platform at `speed`.
+/// Returns, after each of `frames` frames of `dt` [s], the gap [m] between the box's bottom face and
+/// the platform's top face and the box's vertical velocity [m/s].
+struct LiftSample {
+    double gap = 0.0;
+    double box_vz = 0.0;
+};
+std::vector<LiftSample> trackedLift(const BackendFactory& make, double speed, double dt, int frames,
+                                    const Overrides& overrides = {});
 
 }  // namespace vroc::test

@@ -135,6 +135,76 @@ TEST_P(Conformance, RealBodiesIgnoreStateAndImpulses) {
     EXPECT_EQ(after.linear_velocity, Vec3::Zero());
 }
 
+// A tracked body moves as prescribed (origin at p0 + v t, orientation turned by w t), an impulse
+// never moves it, and setBodyState is a sample it moves on from (docs/backend-contract.md).
+TEST_P(Conformance, TrackedBodiesMoveAsPrescribed) {
+    if (infoOf(GetParam()).capabilities.tracked == Support::Unsupported) {
+        EXPECT_THROW(create(GetParam(), lonelyTrackedBody(Shape::box(Vec3(0.3, 0.2, 0.1)))), InputError);
+        GTEST_SKIP() << GetParam() << " declares tracked bodies unsupported (and refuses them)";
+    }
+    const Scene scene = lonelyTrackedBody(Shape::box(Vec3(0.3, 0.2, 0.1)));
+    const Body& body = scene.bodies[1];
+    auto b = create(GetParam(), scene);
+    b->applyImpulse(1, Vec3(0, 0, 100), body.pose.position);
+    for (int f = 0; f < 10; ++f) b->stepFrame(scene.frame_dt);
+    const double t = b->time();
+    BodyState s = b->bodyState(1);
+    const Quat turned = Quat(Eigen::AngleAxisd(0.8 * t, Vec3::UnitZ())) * body.pose.orientation;
+    EXPECT_LE((s.pose.position - (body.pose.position + body.linear_velocity * t)).norm(), 1e-9);
+    EXPECT_TRUE(sameRotation(s.pose.orientation, turned, 1e-9));
+    EXPECT_LE((s.linear_velocity - body.linear_velocity).norm(), 1e-9);
+    EXPECT_LE((s.angular_velocity - body.angular_velocity).norm(), 1e-9);
+    BodyState sample;
+    sample.pose = poseAt(Vec3(2, 1, 0), Quat::Identity());
+    sample.linear_velocity = Vec3(-1, 0, 0);
+    b->setBodyState(1, sample);
+    for (int f = 0; f < 6; ++f) b->stepFrame(scene.frame_dt);
+    s = b->bodyState(1);
+    EXPECT_LE((s.pose.position - (sample.pose.position + sample.linear_velocity * (b->time() - t))).norm(), 1e-9);
+    EXPECT_TRUE(sameRotation(s.pose.orientation, Quat::Identity(), 1e-9));
+    // A non-finite sample is a tracker glitch: refused, counted, the body keeps its motion.
+    BodyState bad = sample;
+    bad.angular_velocity.y() = std::numeric_limits<double>::quiet_NaN();
+    b->setBodyState(1, bad);
+    EXPECT_EQ(b->warnings().at(vocabulary::kNonfiniteState), 1u);
+    EXPECT_LE((b->bodyState(1).linear_velocity - sample.linear_velocity).norm(), 1e-12);
+    // A tracked body without a finite motion in the scene is the caller's mistake.
+    Scene broken = scene;
+    broken.bodies[1].linear_velocity.x() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(create(GetParam(), broken), InputError);
+}
+
+// Two infinite masses have no response: a tracked plate sinks through the real floor and crosses a
+// second tracked plate; both keep their motion, with no event and no warning.
+TEST_P(Conformance, TrackedBodiesPassThroughRealAndTrackedBodies) {
+    if (infoOf(GetParam()).capabilities.tracked == Support::Unsupported) GTEST_SKIP() << "no tracked bodies";
+    Scene scene = sceneWithMaterial(Vec3(0, 0, -9.81));
+    addBody(scene, "floor", Shape::box(Vec3(5, 5, 0.5)), poseAt(Vec3(0, 0, -0.5)), true);
+    Scene one = lonelyTrackedBody(Shape::box(Vec3(0.2, 0.2, 0.02)));
+    Body a = one.bodies[1];
+    a.name = "a";
+    a.pose = poseAt(Vec3(0, 0, 0.5), Quat::Identity());
+    a.linear_velocity = Vec3(0, 0, -1.0);
+    a.angular_velocity = Vec3::Zero();
+    Body c = a;
+    c.name = "c";
+    c.shape = Shape::box(Vec3(0.02, 0.2, 0.2));
+    c.pose = poseAt(Vec3(-0.5, 0, 0), Quat::Identity());
+    c.linear_velocity = Vec3(1.0, 0, 0);
+    c.angular_velocity = Vec3(0, 0, 2.0);
+    scene.bodies.push_back(a);
+    scene.bodies.push_back(c);
+    auto b = create(GetParam(), scene);
+    for (int f = 0; f < 60; ++f) {
+        b->stepFrame(1.0 / 60.0);
+        EXPECT_TRUE(b->takeEvents().empty()) << "frame " << f;
+    }
+    EXPECT_LE((b->bodyState(1).pose.position - Vec3(0, 0, -0.5)).norm(), 1e-9);
+    EXPECT_LE((b->bodyState(2).pose.position - Vec3(0.5, 0, 0)).norm(), 1e-9);
+    EXPECT_LE((b->bodyState(2).angular_velocity - Vec3(0, 0, 2.0)).norm(), 1e-12);
+    for (const auto& [name, count] : b->warnings()) EXPECT_EQ(count, 0u) << name;
+}
+
 TEST_P(Conformance, SameInputGivesTheSameStateHash) {
     const Scene scene = loadScene(std::string(VROC_SOURCE_DIR) + "/scenes/staircase.json");
     std::string hashes[2];
@@ -225,7 +295,8 @@ TEST_P(Conformance, CapabilitiesExplainEveryApproximation) {
     const BackendInfo& info = infoOf(GetParam());
     const BackendCapabilities& c = info.capabilities;
     const std::vector<std::pair<std::string, Support>> features{
-        {"sphere", c.sphere}, {"box", c.box}, {"hull", c.hull}, {"compound", c.compound}, {"restitution", c.restitution}};
+        {"sphere", c.sphere}, {"box", c.box}, {"hull", c.hull}, {"compound", c.compound}, {"restitution", c.restitution},
+        {"tracked", c.tracked}};
     for (const auto& [feature, support] : features)
         if (support == Support::Approximated) {
             ASSERT_TRUE(c.notes.count(feature)) << feature << " is approximated without a note";

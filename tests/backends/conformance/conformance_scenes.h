@@ -62,4 +62,15 @@ inline Scene lonelyBody(Shape shape) {
     return s;
 }
 
+/// lonelyBody with its body made tracked: moving at (0.5, -0.25, 0.1) m/s, turning at 0.8 rad/s.
+inline Scene lonelyTrackedBody(Shape shape) {
+    Scene s = lonelyBody(std::move(shape));
+    Body& b = s.bodies[1];
+    b.role = BodyRole::Tracked;
+    b.mass_properties = MassProperties{};
+    b.linear_velocity = Vec3(0.5, -0.25, 0.1);
+    b.angular_velocity = Vec3(0.0, 0.0, 0.8);
+    return s;
+}
+
 }  // namespace vroc::conformance

@@ -45,6 +45,20 @@ inline int addBody(Scene& s, const std::string& name, Shape shape, const Pose& p
     return static_cast<int>(s.bodies.size()) - 1;
 }
 
+/// Adds a tracked body (infinite mass, moving at `velocity` [m/s] and `angular_velocity` [rad/s]).
+inline int addTracked(Scene& s, const std::string& name, Shape shape, const Pose& pose, int material,
+                      const Vec3& velocity, const Vec3& angular_velocity = Vec3::Zero()) {
+    Body b;
+    b.name = name;
+    b.role = BodyRole::Tracked;
+    b.material = material;
+    b.shape = std::move(shape);
+    b.pose = pose;
+    b.linear_velocity = velocity;
+    b.angular_velocity = angular_velocity;
+    s.bodies.push_back(std::move(b));
+    return static_cast<int>(s.bodies.size()) - 1;
+}
 inline Pose at(const Vec3& p, const Quat& q = Quat::Identity()) {
     Pose pose;
     pose.position = p;

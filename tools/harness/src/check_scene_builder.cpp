@@ -38,6 +38,20 @@ int addBody(Scene& scene, const std::string& name, Shape shape, double mass, con
     return static_cast<int>(scene.bodies.size()) - 1;
 }
 
+int addTracked(Scene& scene, const std::string& name, Shape shape, const Pose& pose, int material,
+               const Vec3& velocity, const Vec3& angular_velocity) {
+    Body b;
+    b.name = name;
+    b.role = BodyRole::Tracked;
+    b.material = material;
+    b.shape = std::move(shape);
+    b.pose = pose;
+    b.linear_velocity = velocity;
+    b.angular_velocity = angular_velocity;
+    scene.bodies.push_back(std::move(b));
+    return static_cast<int>(scene.bodies.size()) - 1;
+}
+
 int addGround(Scene& scene, double hx, double hy, int material) {
     return addBody(scene, "ground", Shape::box(Vec3(hx, hy, 0.5)), 0, at(Vec3(0, 0, -0.5)), material);
 }

@@ -259,6 +259,28 @@ CheckScenario zenoRest() {
 }  // namespace
 
 // The physical criterion behind each tolerance, by the metric id's last part.
+// --- a tracked plate strikes a ball at rest: it leaves at (1 + e) v; the plate keeps p0 + v t ------
+// (infinite mass, frictionless, along the normal: Newton's law with the plate's velocity)
+CheckScenario trackedStrike() {
+    const double v = 2.0, e = 0.5, r = 0.1;
+    const Vec3 p0(-0.5, 0, 0);
+    CheckScenario s{"tracked-strike", "tracked plate (infinite mass) at 2 m/s strikes a ball at rest, e = 0.5, no friction, no gravity",
+                    [=] { Scene sc = emptyScene("check-tracked-strike", Vec3::Zero(), 1.0 / 240);
+                          const int m = addMaterial(sc, e, 0.0);
+                          addBody(sc, "ball", Shape::sphere(r), 1.0, at(Vec3::Zero()), m);
+                          addTracked(sc, "plate", Shape::box(Vec3(0.01, 0.3, 0.3)), at(p0), m, Vec3(v, 0, 0));
+                          return sc; }, 0.6, 1.0 / 240, {}};
+    s.metrics.push_back({"tracked-strike.exit-speed", "ball speed after the strike / ((1 + e) v) - 1", "v_ball = (1 + e) v", "-", 0, 0.02, true,
+        [=](const Scene&, const RunTrace& t) { return lastOf(t, 0).linear_velocity.norm() / ((1 + e) * v) - 1; }, {}});
+    s.metrics.push_back({"tracked-strike.plate-path", "max |x_plate - (p0 + v t)|", "prescribed: p0 + v t", "m", 0, 1e-9, true,
+        [=](const Scene&, const RunTrace& t) {
+            double worst = 0;
+            for (std::size_t f = 0; f < t.frames(); ++f)
+                worst = std::max(worst, (stateOf(t, f, 1).pose.position - (p0 + Vec3(v, 0, 0) * t.times[f])).norm());
+            return worst; }, {}});
+    return s;
+}
+
 std::string checkCriterion(const std::string& metric_id) {
     const std::string kind = metric_id.substr(metric_id.find('.') + 1);
     static const std::vector<std::pair<std::string, std::string>> table{
@@ -281,6 +303,9 @@ std::string checkCriterion(const std::string& metric_id) {
         {"tunnelled", "a rigid sphere never enters a rigid wall: any frame more than the collision distance inside fails"},
         {"gap", "the collision distance: a resting body ends within the contact window of the ground"},
         {"time", "5 %: the Zeno sum converges geometrically; the last bounces below the frame resolution end early"},
+        {"exit-speed", "2 %: Newton's law at one contact with the plate's velocity; an engine that applies restitution "
+                       "at a sampled penetration misses by the velocity change of one step"},
+        {"plate-path", "1e-9 m, rounding only: a tracked body's motion is prescribed and no collision changes it"},
     };
     for (const auto& [k, why] : table)
         if (kind == k) return why;
@@ -290,7 +315,7 @@ std::string checkCriterion(const std::string& metric_id) {
 std::vector<CheckScenario> checkScenarios(bool long_set) {
     std::vector<CheckScenario> out = {ballistic(), bounce(0.5), bounce(0.8), bounce(1.0), sliding(), incline(),
                                       tumble("tumble", Vec3(0.5, 0.0, 0.3), 10.0, "spin mixing the two stable axes"),
-                                      cradle(), stack(5, 3.0), tunnel(), restingHull()};
+                                      cradle(), stack(5, 3.0), tunnel(), restingHull(), trackedStrike()};
     if (long_set) {
         out.push_back(tumble("tumble-intermediate", Vec3(0.01, 2.0, 0.01), 20.0, "spin near the intermediate axis (Dzhanibekov)"));
         out.push_back(stack(10, 20.0));

@@ -63,7 +63,7 @@ Json invariantsJson(const RunTrace& t, const Scene& scene) {
     const Invariants& i0 = t.invariants.front();
     double de = 0, dl = 0, dp = 0, mass = 0;
     for (const Body& b : scene.bodies)
-        if (!b.isStatic()) mass += b.mass_properties.mass;
+        if (b.isDynamic()) mass += b.mass_properties.mass;
     for (std::size_t f = 0; f < t.invariants.size(); ++f) {
         const Invariants& i = t.invariants[f];
         de = std::max(de, std::abs(i.energy() - i0.energy()));
@@ -119,7 +119,7 @@ Json consensusJson(const Scene& scene, const std::vector<SelectedBackend>& backe
     for (const SelectedBackend& b : backends) names.push_back(b.info->name);
     double weight = 0;   // sum of m |g|: the energy of lifting every body by 1 m
     for (const Body& b : scene.bodies)
-        if (!b.isStatic()) weight += b.mass_properties.mass * scene.gravity.norm();
+        if (b.isDynamic()) weight += b.mass_properties.mass * scene.gravity.norm();
     auto firstContact = [](const RunTrace& t) { return t.events.empty() ? NAN : t.events.front().time; };
     auto finalEnergy = [](const RunTrace& t) { return t.invariants.back().energy(); };
     std::vector<ConsensusInput> inputs(3);

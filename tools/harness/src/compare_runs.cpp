@@ -24,7 +24,7 @@ std::vector<std::size_t> anchorFrames(std::size_t frames, int windows, std::int6
 std::vector<BodyState> perturbedStates(const Scene& scene, double epsilon) {
     std::vector<BodyState> s = initialStates(scene);
     for (std::size_t i = 0; i < s.size(); ++i)
-        if (!scene.bodies[i].isStatic()) s[i].pose.position.x() += epsilon;
+        if (scene.bodies[i].isDynamic()) s[i].pose.position.x() += epsilon;
     return s;
 }
 

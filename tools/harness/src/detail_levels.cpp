@@ -70,7 +70,7 @@ Scene simplifyScene(const Scene& scene, const DetailLevel& level) {
     Scene out = scene;
     out.name = scene.name + " @" + level.name;
     for (Body& b : out.bodies) {
-        if (b.isStatic()) continue;
+        if (!b.isDynamic()) continue;
         const double mass = b.mass_properties.mass;
         if (level.spheres) {
             const double r = std::cbrt(3 * b.mass_properties.volume / (4 * std::numbers::pi));
@@ -97,7 +97,7 @@ int virtualFaceCount(const Scene& scene) {
     };
     int n = 0;
     for (const Body& b : scene.bodies)
-        if (!b.isStatic()) n += faces(b.shape, faces);
+        if (b.isDynamic()) n += faces(b.shape, faces);
     return n;
 }
 

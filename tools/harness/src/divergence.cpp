@@ -9,14 +9,14 @@ namespace vroc::harness {
 double maxPositionError(const Scene& scene, std::span<const BodyState> a, std::span<const BodyState> b) {
     double worst = 0;
     for (std::size_t i = 0; i < scene.bodies.size() && i < a.size() && i < b.size(); ++i)
-        if (!scene.bodies[i].isStatic()) worst = std::max(worst, (a[i].pose.position - b[i].pose.position).norm());
+        if (scene.bodies[i].isDynamic()) worst = std::max(worst, (a[i].pose.position - b[i].pose.position).norm());
     return worst;
 }
 
 double maxAngleError(const Scene& scene, std::span<const BodyState> a, std::span<const BodyState> b) {
     double worst = 0;
     for (std::size_t i = 0; i < scene.bodies.size() && i < a.size() && i < b.size(); ++i) {
-        if (scene.bodies[i].isStatic()) continue;
+        if (!scene.bodies[i].isDynamic()) continue;
         const double dot = std::abs(a[i].pose.orientation.normalized().dot(b[i].pose.orientation.normalized()));
         worst = std::max(worst, 2.0 * std::acos(std::min(1.0, dot)));
     }
@@ -32,7 +32,7 @@ Divergence divergence(const Scene& scene, const RunTrace& a, const RunTrace& b) 
         d.distance.push_back(maxPositionError(scene, a.states[f], b.states[f]));
         std::size_t v = 0;
         for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-            if (scene.bodies[i].isStatic()) continue;
+            if (!scene.bodies[i].isDynamic()) continue;
             d.per_body_max[v] = std::max(d.per_body_max[v], (a.states[f][i].pose.position - b.states[f][i].pose.position).norm());
             ++v;
         }

@@ -182,7 +182,7 @@ std::vector<BodyState> ensembleMemberStates(const Scene& scene, const Perturbati
     SplitMix64 rng(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(member) + 1);
     auto noise = [&](double sigma) { return Vec3(sigma * rng.normal(), sigma * rng.normal(), sigma * rng.normal()); };
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-        if (scene.bodies[i].isStatic()) continue;
+        if (!scene.bodies[i].isDynamic()) continue;
         BodyState& s = states[i];
         s.pose.position += noise(p.position);
         s.linear_velocity += noise(p.velocity);

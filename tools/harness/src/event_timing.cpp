@@ -24,7 +24,7 @@ std::optional<double> restTime(const Scene& scene, const RunTrace& trace, RestTh
     for (std::size_t f = 0; f < trace.states.size(); ++f) {
         bool rest = true;
         for (std::size_t i = 0; i < scene.bodies.size() && rest; ++i) {
-            if (scene.bodies[i].isStatic()) continue;
+            if (!scene.bodies[i].isDynamic()) continue;
             const BodyState& s = trace.states[f][i];
             rest = s.linear_velocity.norm() < threshold.linear && s.angular_velocity.norm() < threshold.angular;
         }

@@ -6,7 +6,7 @@ namespace vroc::harness {
 std::vector<int> virtualBodyIndices(const Scene& scene) {
     std::vector<int> out;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-        if (!scene.bodies[i].isStatic()) out.push_back(static_cast<int>(i));
+        if (scene.bodies[i].isDynamic()) out.push_back(static_cast<int>(i));
     return out;
 }
 
@@ -18,7 +18,7 @@ Invariants computeInvariants(const Scene& scene, std::span<const BodyState> stat
     Invariants inv;
     for (std::size_t i = 0; i < scene.bodies.size() && i < states.size(); ++i) {
         const Body& body = scene.bodies[i];
-        if (body.isStatic()) continue;
+        if (!body.isDynamic()) continue;
         const BodyState& s = states[i];
         const double m = body.mass_properties.mass;
         const Mat3 R = s.pose.orientation.normalized().toRotationMatrix();

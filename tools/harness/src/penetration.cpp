@@ -20,7 +20,7 @@ double maxPenetration(const Scene& scene, std::span<const BodyState> states) {
     double deepest = 0;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
         for (std::size_t j = i + 1; j < scene.bodies.size(); ++j) {
-            if (scene.bodies[i].isStatic() && scene.bodies[j].isStatic()) continue;
+            if (!scene.bodies[i].isDynamic() && !scene.bodies[j].isDynamic()) continue;   // no response between infinite masses
             if (!mayTouch(scene, states, i, j, 0)) continue;
             const double d = bodyDistance(scene, static_cast<int>(i), states[i].pose, static_cast<int>(j), states[j].pose);
             deepest = std::max(deepest, -d);

@@ -23,7 +23,7 @@ double lowestRealPoint(const Scene& scene) {
 bool tunnelled(const Scene& scene, const std::vector<BodyState>& states, double floor_z) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const Body& b = scene.bodies[i];
-        if (b.isStatic()) continue;
+        if (!b.isDynamic()) continue;
         const Vec3 c = states[i].pose.position;
         if (c.z() < floor_z - 1.0) return true;
         for (const Body& real : scene.bodies) {
@@ -40,7 +40,7 @@ bool startsSupportedAtRest(const Scene& scene) {
     bool any = false;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const Body& b = scene.bodies[i];
-        if (b.isStatic()) continue;
+        if (!b.isDynamic()) continue;
         any = true;
         if (b.linear_velocity.norm() > 0 || b.angular_velocity.norm() > 0) return false;
         if (closestDistance(scene, start, static_cast<int>(i)) > std::max(scene.collision_distance, 1e-3)) return false;
@@ -69,7 +69,7 @@ RobustnessVerdict judgeRobustness(const Scene& scene, const RunTrace& run, const
     // come apart: judged against the start, since a backend's own reference may collapse too.
     if (startsSupportedAtRest(scene)) {
         for (std::size_t i = 0; i < n; ++i) {
-            if (scene.bodies[i].isStatic()) continue;
+            if (!scene.bodies[i].isDynamic()) continue;
             const double moved = (run.states.back()[i].pose.position - scene.bodies[i].pose.position).norm();
             if (moved > scene.bodies[i].shape.boundingRadius()) return {false, "collapse"};
         }
@@ -77,7 +77,7 @@ RobustnessVerdict judgeRobustness(const Scene& scene, const RunTrace& run, const
     const double ref_end = reference.times.back();
     if (restTime(scene, reference) && std::abs(run.times.back() - ref_end) < 1e-6) {
         for (std::size_t i = 0; i < n; ++i) {
-            if (scene.bodies[i].isStatic()) continue;
+            if (!scene.bodies[i].isDynamic()) continue;
             const double moved = (run.states.back()[i].pose.position - reference.states.back()[i].pose.position).norm();
             if (moved > scene.bodies[i].shape.boundingRadius()) return {false, "collapse"};
         }

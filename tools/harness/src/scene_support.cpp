@@ -25,7 +25,10 @@ void useShape(const Shape& shape, const BackendCapabilities& c, std::map<std::st
 
 SceneSupport sceneSupport(const Scene& scene, const BackendCapabilities& capabilities) {
     std::map<std::string, Support> used;
-    for (const Body& body : scene.bodies) useShape(body.shape, capabilities, used);
+    for (const Body& body : scene.bodies) {
+        useShape(body.shape, capabilities, used);
+        if (body.isTracked()) used["tracked"] = capabilities.tracked;
+    }
     for (const Material& m : scene.materials)
         if (m.restitution > 0.0) used["restitution"] = capabilities.restitution;
     SceneSupport out;

@@ -39,7 +39,7 @@ std::string fmt(double v) { char b[32]; std::snprintf(b, sizeof b, "%.4g", v); r
 std::vector<std::size_t> virtualBodies(const Scene& sc) {
     std::vector<std::size_t> out;
     for (std::size_t i = 0; i < sc.bodies.size(); ++i)
-        if (!sc.bodies[i].isStatic()) out.push_back(i);
+        if (sc.bodies[i].isDynamic()) out.push_back(i);
     return out;
 }
 

@@ -1,15 +1,34 @@
 // SPDX-License-Identifier: MIT
 // play.json: the only file of vroc_play that includes nlohmann/json (a heavy header).
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "vroc/core/errors.h"
+#include "vroc/core/recording/atomic_output.h"
 #include "vroc/play/play_loop.h"
 
 namespace vroc::play {
 namespace {
 nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+nlohmann::json latency(const LatencySummary& s) {
+    return {{"count", s.count}, {"mean", s.mean}, {"p50", s.p50}, {"p95", s.p95}, {"max", s.max}};
+}
+
+/// Frames with a valid sample and distinct samples (sequence numbers) of a device's trace.
+nlohmann::json traceSummary(const std::vector<DeviceFrame>& trace) {
+    int valid = 0, distinct = 0;
+    bool any = false;
+    std::uint64_t last = 0;
+    for (const DeviceFrame& f : trace) {
+        if (!f.valid) continue;
+        ++valid;
+        if (!any || f.sequence != last) ++distinct;
+        any = true;
+        last = f.sequence;
+    }
+    return {{"frames_with_sample", valid}, {"distinct_samples", distinct}};
+}
 }  // namespace
 
 void writePlayJson(const PlayReport& r, const std::string& path) {
@@ -52,12 +71,34 @@ void writePlayJson(const PlayReport& r, const std::string& path) {
     }
     j["grabs"] = r.grabs;
     j["throws"] = throws;
+    j["force_output"] = {{"hand_accepts_force", r.hand_accepts_force}, {"forces_sent", r.forces_sent},
+                         {"forces_rejected", r.forces_rejected}};
+    json realtime = {{"enabled", r.realtime}};
+    if (r.realtime) {
+        realtime["frames_missed"] = r.frames_missed;
+        realtime["worst_lateness_ms"] = r.worst_lateness_ms;
+        json lat = json::object();
+        for (const auto& [device, s] : r.latency_ms) lat[device] = latency(s);
+        realtime["latency_ms"] = lat;
+    }
+    j["realtime"] = realtime;
+    json devices = json::object();
+    if (!r.hand_trace.empty()) devices["hand"] = traceSummary(r.hand_trace);
+    if (!r.head_trace.empty()) devices["head"] = traceSummary(r.head_trace);
+    j["device_samples"] = devices;
+    json tracked = json::array();
+    for (const TrackedReport& t : r.tracked)
+        tracked.push_back({{"body", t.body}, {"device", t.device}, {"sensor", t.sensor}, {"frames_set", t.frames_set},
+                           {"frames_without_sample", t.frames_without_sample},
+                           {"velocities_estimated", t.velocities_estimated}});
+    j["tracked"] = tracked;
     j["warnings"] = r.warnings;
     j["outputs"] = r.outputs;
-    std::ofstream out(path);
-    if (!out) throw RunError(path + ": cannot open for writing");
-    out << j.dump(2) << "\n";
-    if (!out) throw RunError(path + ": write failed");
+    if (!r.sound.empty()) j["sound"] = r.sound;   // --sound: format, impacts, output stage
+    // Atomically (<path>.tmp renamed into place): a play.json is never half written.
+    recording::AtomicFile out(path);
+    out.write(j.dump(2) + "\n");
+    out.commit();
 }
 
 }  // namespace vroc::play

@@ -48,7 +48,7 @@ MotionBound NativeBackend::ballisticBound(int body) const {
     if (rb.is_static || asleep_[static_cast<std::size_t>(body)] != 0) return MotionBound::stationary();
     MotionBound m;
     m.velocity = rb.velocity;
-    m.acceleration = scene_.gravity;
+    m.acceleration = rb.is_kinematic ? Vec3::Zero() : scene_.gravity;
     m.angular_speed = rb.maxAngularSpeed();
     m.outer_radius = shapes_[static_cast<std::size_t>(body)].outer_radius;
     m.inner_radius = shapes_[static_cast<std::size_t>(body)].inner_radius;
@@ -79,7 +79,7 @@ std::optional<RigidMotion> NativeBackend::rigidMotion(int body, double t, double
     RigidMotion m;
     m.com = rb.com;
     m.velocity = rb.velocity;
-    m.acceleration = drifting ? drift_acceleration_[i] : scene_.gravity;
+    m.acceleration = drifting ? drift_acceleration_[i] : (rb.is_kinematic ? Vec3::Zero() : scene_.gravity);
     m.angular_velocity = rb.angularVelocity();
     m.curvature = rotationCurvatureBound(rb.angular_momentum.norm(), drifting ? drift_torque_[i].norm() : 0.0,
                                          rb.smallest_moment, duration, rb.isotropic);
@@ -113,7 +113,7 @@ Aabb NativeBackend::sweptBox(int body) const {
 void NativeBackend::startDrift(int body, const BodyImpulse& imp, double t, double h) {
     const std::size_t i = static_cast<std::size_t>(body);
     RigidBody& rb = bodies_[i];
-    if (rb.is_static || !(h > 0.0)) return;
+    if (rb.infiniteMass() || !(h > 0.0)) return;
     const RigidBody saved = rb;
     // Split-impulse position correction: applied to the pose, never to the velocities.
     rb.com += imp.displacement;
@@ -125,12 +125,24 @@ void NativeBackend::startDrift(int body, const BodyImpulse& imp, double t, doubl
     recoverIfNonFinite(body, saved);
 }
 
+bool NativeBackend::touchesMovingTracked(int body) const {
+    for (int p : body_pairs_[static_cast<std::size_t>(body)]) {
+        if (!touching_.count(p)) continue;
+        const PairState& ps = pairs_[static_cast<std::size_t>(p)];
+        const RigidBody& other = bodies_[static_cast<std::size_t>(ps.a == body ? ps.b : ps.a)];
+        if (other.is_kinematic && (!other.velocity.isZero(0.0) || !other.kinematic_angular_velocity.isZero(0.0)))
+            return true;
+    }
+    return false;
+}
+
 void NativeBackend::maybeSleep(const std::vector<int>& island, double t) {
     if (!settings_.sleeping) return;
     bool all_still = true;
     for (int body : island) {
         const std::size_t i = static_cast<std::size_t>(body);
-        if (is_static_[i]) continue;
+        if (infinite_mass_[i]) continue;
+        if (touchesMovingTracked(body)) return;   // carried by a moving real object: never asleep
         const RigidBody& rb = bodies_[i];
         const double speed = rb.velocity.norm() + rb.angularVelocity().norm() * shapes_[i].outer_radius;
         if (!(speed < settings_.sleep_speed)) still_since_[i] = t;
@@ -139,7 +151,7 @@ void NativeBackend::maybeSleep(const std::vector<int>& island, double t) {
     if (!all_still) return;
     for (int body : island) {
         const std::size_t i = static_cast<std::size_t>(body);
-        if (is_static_[i]) continue;
+        if (infinite_mass_[i]) continue;
         syncBody(body, t);
         RigidBody& rb = bodies_[i];
         rb.velocity.setZero();

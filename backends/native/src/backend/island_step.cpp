@@ -47,7 +47,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
     const double cd = scene_.collision_distance;
     // Islands: the touching pairs known so far and the contacts this step found.
-    islands_.reset(is_static_);
+    islands_.reset(infinite_mass_);
     for (int p : touching_) islands_.join(pairs_[static_cast<std::size_t>(p)].a, pairs_[static_cast<std::size_t>(p)].b);
     for (const PairSample& s : samples)
         if (!s.manifolds.empty()) islands_.join(pairs_[static_cast<std::size_t>(s.pair)].a, pairs_[static_cast<std::size_t>(s.pair)].b);
@@ -63,7 +63,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     for (int p : touching_) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
         for (int body : {ps.a, ps.b})
-            if (!is_static_[static_cast<std::size_t>(body)] && tick_end_[static_cast<std::size_t>(body)] <= t) markDue(body);
+            if (!infinite_mass_[static_cast<std::size_t>(body)] && tick_end_[static_cast<std::size_t>(body)] <= t) markDue(body);
     }
     for (const PairSample& s : samples) {
         if (s.manifolds.empty()) continue;
@@ -72,7 +72,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
     auto islandOfPair = [&](int p) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
-        return islands_.islandOf(is_static_[static_cast<std::size_t>(ps.a)] ? ps.b : ps.a);
+        return islands_.islandOf(infinite_mass_[static_cast<std::size_t>(ps.a)] ? ps.b : ps.a);
     };
     // The due islands' touching pairs are refreshed from their cached features.
     if (any_due) {
@@ -118,7 +118,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // (Held: its dynamic bodies drifted with the last solve up to now; a ball bouncing freely in
     // the window was not held, and its bounces keep their restitution.)
     auto held = [&](int body) {
-        return is_static_[static_cast<std::size_t>(body)] || drift_until_[static_cast<std::size_t>(body)] >= t;
+        return infinite_mass_[static_cast<std::size_t>(body)] || drift_until_[static_cast<std::size_t>(body)] >= t;
     };
     std::vector<std::uint8_t> resting(manifolds.size(), 0);
     for (std::size_t m = 0; m < manifolds.size(); ++m)
@@ -223,7 +223,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         }
         for (std::size_t k = 0; k < is->bodies.size(); ++k) {
             const int body = is->bodies[k];
-            if (is_static_[static_cast<std::size_t>(body)]) continue;
+            if (infinite_mass_[static_cast<std::size_t>(body)]) continue;
             if (asleep_[static_cast<std::size_t>(body)] != 0) wake(body);   // touched: awake again
             if (is->impulses[k].supported) {
                 startDrift(body, is->impulses[k], t, h);
@@ -287,7 +287,7 @@ CollisionPhaseReport NativeBackend::collisionPhase(std::vector<RigidBody>& bodie
             a.applyImpulse(-r.impulse, m.centroid);
             b.applyImpulse(r.impulse, m.centroid);
             for (int body : {m.body_a, m.body_b})
-                if (!bodies[static_cast<std::size_t>(body)].is_static) report.impulsed[static_cast<std::size_t>(body)] = 1;
+                if (!bodies[static_cast<std::size_t>(body)].infiniteMass()) report.impulsed[static_cast<std::size_t>(body)] = 1;
             m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
             any = true;
         }

@@ -16,13 +16,18 @@ NativeBackend::NativeBackend(const Scene& scene, const NativeSettings& settings)
     if (!(scene.collision_distance > 0.0))
         throw InputError("scene '" + scene.name + "': collision_distance must be > 0 for the native backend");
     for (const Body& body : scene.bodies) {
+        if (body.isTracked() && !(body.pose.position.allFinite() && body.pose.orientation.coeffs().allFinite() &&
+                                  body.pose.orientation.norm() > 0.0 && body.linear_velocity.allFinite() &&
+                                  body.angular_velocity.allFinite()))
+            throw InputError("scene '" + scene.name + "', tracked body '" + body.name +
+                             "': expected a finite pose and finite velocities (its prescribed motion)");
         bodies_.push_back(RigidBody::fromScene(body));
         try {
             shapes_.push_back(BodyShape::fromScene(body.shape, bodies_.back().com_offset));
         } catch (const GeometryError& e) {
             throw InputError("scene '" + scene.name + "', body '" + body.name + "': " + e.what());
         }
-        is_static_.push_back(bodies_.back().is_static);
+        infinite_mass_.push_back(bodies_.back().infiniteMass());
     }
     const std::size_t n = bodies_.size();
     versions_.assign(n, 0);
@@ -38,7 +43,7 @@ NativeBackend::NativeBackend(const Scene& scene, const NativeSettings& settings)
     for (std::size_t i = 0; i < n; ++i) {
         const RigidBody& rb = bodies_[i];
         broad_phase_.addBody(shapes_[i].worldAabb(rb.framePose()).inflated(scene.collision_distance),
-                             rb.is_static);
+                             rb.infiniteMass());
     }
     partition_ = std::make_unique<PairPartition>(settings_.threads);
 }
@@ -78,7 +83,7 @@ void NativeBackend::setBodyState(int body, const BodyState& state) {
 void NativeBackend::applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) {
     checkBody(body, "applyImpulse");
     RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
-    if (rb.is_static) return;
+    if (rb.infiniteMass()) return;
     if (!impulse.allFinite() || !world_point.allFinite()) {
         warn("nonfinite_state");
         return;
@@ -182,7 +187,7 @@ double NativeBackend::nextTick() {
     for (int p : touching_) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
         for (int body : {ps.a, ps.b})
-            if (!is_static_[static_cast<std::size_t>(body)])
+            if (!infinite_mass_[static_cast<std::size_t>(body)])
                 next_tick_ = std::min(next_tick_, tick_end_[static_cast<std::size_t>(body)]);
     }
     return next_tick_;

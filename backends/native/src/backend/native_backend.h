@@ -163,6 +163,8 @@ private:
     Aabb sweptBox(int body) const;
     /// Starts a drift of `h` [s] at time t with the contact phase's impulses.
     void startDrift(int body, const BodyImpulse& imp, double t, double h);
+    /// True if `body` touches a tracked body that moves (such an island never sleeps).
+    bool touchesMovingTracked(int body) const;
     /// Puts the island's bodies to sleep if every one has been still for sleep_time (sleeping on).
     void maybeSleep(const std::vector<int>& bodies, double t);
     void wake(int body) {
@@ -209,7 +211,7 @@ private:
     std::set<int> touching_;                // pairs_ indices of touching pairs (sorted)
     CollisionQueue queue_;                  // flight pairs by earliest possible contact time
     IslandBuilder islands_;
-    std::vector<bool> is_static_;
+    std::vector<bool> infinite_mass_;       // per body: static or tracked (ground for islands and solves)
     double frame_end_ = 0.0;                // [s] end time of the frame being stepped
     double frame_dt_ = 0.0;                 // [s] its length
     SweepAndPrune broad_phase_;

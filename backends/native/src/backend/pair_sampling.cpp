@@ -180,7 +180,8 @@ void NativeBackend::recordSamples(const std::vector<PairSample>& samples) {
 
 double NativeBackend::bouncingSphereRecheck(const PairSample& s, double t) const {
     const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
-    const bool a_static = is_static_[static_cast<std::size_t>(ps.a)], b_static = is_static_[static_cast<std::size_t>(ps.b)];
+    // (a truly static partner: a tracked one moves, and its pairs are not refined here)
+    const bool a_static = bodies_[static_cast<std::size_t>(ps.a)].is_static, b_static = bodies_[static_cast<std::size_t>(ps.b)].is_static;
     if (a_static == b_static || ps.placed_in_window) return -1.0;   // placed resting: no refinement
     const int sphere = a_static ? ps.b : ps.a;
     const BodyShape& sh = shapes_[static_cast<std::size_t>(sphere)];
@@ -252,7 +253,7 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
     // drifting may close to kSolvedFloor (the next solve's position pass repairs that); any other
     // touching pair only to the floor of the window.
     auto drifting = [&](int body) {
-        return is_static_[static_cast<std::size_t>(body)] || drift_until_[static_cast<std::size_t>(body)] > t;
+        return infinite_mass_[static_cast<std::size_t>(body)] || drift_until_[static_cast<std::size_t>(body)] > t;
     };
     const bool held = solved && drifting(ps.a) && drifting(ps.b);
     double bound = std::max(0.0, horizon);
@@ -274,7 +275,7 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
     // keeps a squeezed body from freezing time in zero-length steps.
     if (held) bound = std::max(bound, kHeldMinTick * frame_dt_ / static_cast<double>(settings_.contact_substeps));
     for (int body : {ps.a, ps.b})
-        if (!is_static_[static_cast<std::size_t>(body)])
+        if (!infinite_mass_[static_cast<std::size_t>(body)])
             setTick(body, std::min(tick_end_[static_cast<std::size_t>(body)], t + bound));
 }
 

@@ -23,6 +23,7 @@ void registerBackend() {
     c.hull = Support::Exact;
     c.compound = Support::Exact;
     c.restitution = Support::Exact;
+    c.tracked = Support::Exact;
     c.friction = FrictionModel::Cone;
     c.continuous_collision = true;
     c.deterministic = true;

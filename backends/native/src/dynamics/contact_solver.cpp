@@ -169,8 +169,8 @@ void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodie
     }
     std::deque<int> queue;
     for (std::size_t i = 0; i < wb.size(); ++i) {
-        wb[i].level = bodies[i].is_static ? 0 : kUnreached;
-        if (bodies[i].is_static) queue.push_back(static_cast<int>(i));
+        wb[i].level = bodies[i].infiniteMass() ? 0 : kUnreached;
+        if (bodies[i].infiniteMass()) queue.push_back(static_cast<int>(i));
     }
     while (!queue.empty()) {
         const int i = queue.front();
@@ -607,7 +607,7 @@ int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies
         }
     }
     for (std::size_t i = 0; i < wb.size(); ++i) {
-        if (bodies[i].is_static) continue;
+        if (bodies[i].infiniteMass()) continue;
         impulses[i].displacement = pv[i].v * h;
     }
     return below;
@@ -625,6 +625,11 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         const RigidBody& rb = bodies[i];
         wb[i].com = rb.com;
         if (rb.is_static) continue;
+        if (rb.is_kinematic) {   // infinite mass, moving: its velocity enters every relative velocity
+            wb[i].v = rb.velocity;
+            wb[i].w = rb.angularVelocity();
+            continue;
+        }
         wb[i].inv_mass = rb.inv_mass;
         wb[i].inv_inertia = rb.invInertiaWorld();
         wb[i].w = wb[i].inv_inertia * rb.angular_momentum;
@@ -670,7 +675,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     }
     report.points = static_cast<int>(cs.size());
     for (std::size_t i = 0; i < bodies.size(); ++i) {
-        if (!bodies[i].is_static) wb[i].v += gravity * h;
+        if (!bodies[i].infiniteMass()) wb[i].v += gravity * h;
     }
     const std::vector<WorkBody> predicted = wb;
     if (settings.warm_start && !single_point) warmStart(wb, cs, patches, manifolds);
@@ -714,7 +719,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     report.corrected_patches = positionPass(wb, bodies, patches, manifolds, h, settings, impulses);
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& rb = bodies[i];
-        if (rb.is_static) continue;
+        if (rb.infiniteMass()) continue;
         const Vec3 dv = wb[i].v - predicted[i].v;
         const Vec3 dw = wb[i].w - predicted[i].w;
         if (dv.isZero(0.0) && dw.isZero(0.0) && impulses[i].displacement.isZero(0.0)) continue;

@@ -56,6 +56,10 @@ Quat energyCorrection(const Vec3& c, const Mat3& inv_inertia_body, double target
 
 void advanceBallistic(RigidBody& body, double h, const Vec3& gravity) {
     if (body.is_static) return;
+    if (body.is_kinematic) {   // prescribed motion: no gravity
+        body.com += body.velocity * h;
+        return;
+    }
     body.com += body.velocity * h + (0.5 * h * h) * gravity;
     body.velocity += gravity * h;
 }

@@ -11,6 +11,7 @@ namespace vroc::native {
 inline constexpr double kMaxSubstepAngle = 0.01;
 
 /// Ballistic translation: com += v h + g h^2/2, v += g h. Exact in floating point terms.
+/// Kinematic (tracked) bodies: com += v h.
 void advanceBallistic(RigidBody& body, double h, const Vec3& gravity);
 
 /// Torque-free rotation over `h` [s]: L (world) unchanged. Isotropic bodies (ω constant) rotate in

@@ -6,13 +6,14 @@
 namespace vroc::native {
 
 Mat3 RigidBody::invInertiaWorld() const {
-    if (is_static) return Mat3::Zero();
+    if (infiniteMass()) return Mat3::Zero();
     const Mat3 r = rotation();
     return r * inv_inertia_body * r.transpose();
 }
 
 Vec3 RigidBody::angularVelocity() const {
     if (is_static) return Vec3::Zero();
+    if (is_kinematic) return kinematic_angular_velocity;
     // Body-frame form keeps the product cheap and symmetric: omega = R I^-1 R^T L.
     return orientation * (inv_inertia_body * (orientation.conjugate() * angular_momentum));
 }
@@ -25,17 +26,18 @@ Pose RigidBody::framePose() const {
 }
 
 void RigidBody::applyImpulse(const Vec3& impulse, const Vec3& p) {
-    if (is_static) return;
+    if (infiniteMass()) return;
     velocity += inv_mass * impulse;
     angular_momentum += (p - com).cross(impulse);
     refreshEnergy();
 }
 
 void RigidBody::refreshEnergy() {
-    rotational_energy = is_static ? 0.0 : 0.5 * angular_momentum.dot(angularVelocity());
+    rotational_energy = infiniteMass() ? 0.0 : 0.5 * angular_momentum.dot(angularVelocity());
 }
 
 double RigidBody::maxAngularSpeed() const {
+    if (is_kinematic) return kinematic_angular_velocity.norm();
     if (is_static || smallest_moment <= 0.0) return 0.0;
     return angular_momentum.norm() / smallest_moment;
 }
@@ -43,10 +45,16 @@ double RigidBody::maxAngularSpeed() const {
 RigidBody RigidBody::fromScene(const Body& body) {
     RigidBody rb;
     rb.is_static = body.isStatic();
-    rb.com_offset = body.isStatic() ? Vec3::Zero() : body.mass_properties.center_of_mass;
+    rb.is_kinematic = body.isTracked();
+    rb.com_offset = body.isDynamic() ? body.mass_properties.center_of_mass : Vec3::Zero();
     rb.orientation = body.pose.orientation.normalized();
     rb.com = body.pose.position + rb.orientation * rb.com_offset;
-    if (!rb.is_static) {
+    if (rb.is_kinematic) {
+        rb.velocity = body.linear_velocity;
+        rb.kinematic_angular_velocity = body.angular_velocity;
+        rb.isotropic = true;   // ω is constant: the rotation has the closed form
+    }
+    if (body.isDynamic()) {
         rb.inv_mass = 1.0 / body.mass_properties.mass;
         rb.inertia_body = 0.5 * (body.mass_properties.inertia + body.mass_properties.inertia.transpose());
         rb.inv_inertia_body = rb.inertia_body.inverse();
@@ -66,6 +74,10 @@ void RigidBody::setFromState(const Pose& pose, const Vec3& linear_velocity, cons
     orientation = pose.orientation.normalized();
     com = pose.position + orientation * com_offset;
     velocity = linear_velocity;
+    if (is_kinematic) {
+        kinematic_angular_velocity = angular_velocity;
+        return;
+    }
     const Mat3 r = rotation();
     angular_momentum = r * inertia_body * r.transpose() * angular_velocity;
     refreshEnergy();

@@ -10,6 +10,12 @@ namespace vroc::native {
 
 struct RigidBody {
     bool is_static = true;              ///< real bodies: infinite mass, never move
+    /// Tracked bodies: infinite mass, moving at prescribed velocities (no gravity, never changed by
+    /// an impulse): `velocity` and `kinematic_angular_velocity`, set from the scene or a tracker.
+    bool is_kinematic = false;
+    Vec3 kinematic_angular_velocity = Vec3::Zero();   ///< [rad/s] world (kinematic bodies only)
+    /// No impulse moves it (static or kinematic): it is ground for the solver.
+    bool infiniteMass() const { return is_static || is_kinematic; }
     double inv_mass = 0.0;              ///< [1/kg] 0 for static bodies
     Mat3 inertia_body = Mat3::Zero();   ///< [kg m^2] about the COM, body-frame axes
     Mat3 inv_inertia_body = Mat3::Zero();   ///< [1/(kg m^2)] 0 for static bodies
@@ -23,7 +29,7 @@ struct RigidBody {
 
     /// World rotation matrix of the body frame.
     Mat3 rotation() const { return orientation.toRotationMatrix(); }
-    /// [1/(kg m^2)] inverse inertia in world axes (zero for static bodies).
+    /// [1/(kg m^2)] inverse inertia in world axes (zero for infinite mass).
     Mat3 invInertiaWorld() const;
     /// [rad/s] world angular velocity, I_world^-1 L.
     Vec3 angularVelocity() const;
@@ -32,7 +38,7 @@ struct RigidBody {
     /// Scene body frame -> world.
     Pose framePose() const;
 
-    /// Applies an impulse [N s] at world point `p` (no effect on static bodies).
+    /// Applies an impulse [N s] at world point `p` (no effect on infinite mass).
     void applyImpulse(const Vec3& impulse, const Vec3& p);
     /// Re-derives the rotational energy reference after L or the orientation was set from outside.
     void refreshEnergy();

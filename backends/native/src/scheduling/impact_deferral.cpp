@@ -27,7 +27,7 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
         ++touches[static_cast<std::size_t>(ps.b)];
     }
     auto freeBody = [&](int body) {
-        return bodies_[static_cast<std::size_t>(body)].is_static || touches[static_cast<std::size_t>(body)] == 1;
+        return bodies_[static_cast<std::size_t>(body)].infiniteMass() || touches[static_cast<std::size_t>(body)] == 1;
     };
     // Only a single sphere against a real (static) body for now: after an impact at ~0 gap, a
     // touching pair's protection bound (scheduleSampled) still lets it close by 1/8 of the

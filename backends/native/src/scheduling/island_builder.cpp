@@ -6,14 +6,14 @@
 
 namespace vroc::native {
 
-void IslandBuilder::reset(const std::vector<bool>& is_static) {
-    is_static_ = is_static;
-    parent_.resize(is_static.size());
+void IslandBuilder::reset(const std::vector<bool>& infinite_mass) {
+    infinite_mass_ = infinite_mass;
+    parent_.resize(infinite_mass.size());
     std::iota(parent_.begin(), parent_.end(), 0);
 }
 
 int IslandBuilder::islandOf(int body) {
-    if (is_static_[static_cast<std::size_t>(body)]) return -1;
+    if (infinite_mass_[static_cast<std::size_t>(body)]) return -1;
     int root = body;
     while (parent_[static_cast<std::size_t>(root)] != root) root = parent_[static_cast<std::size_t>(root)];
     while (parent_[static_cast<std::size_t>(body)] != root) {   // path compression
@@ -25,7 +25,7 @@ int IslandBuilder::islandOf(int body) {
 }
 
 void IslandBuilder::join(int a, int b) {
-    if (is_static_[static_cast<std::size_t>(a)] || is_static_[static_cast<std::size_t>(b)]) return;
+    if (infinite_mass_[static_cast<std::size_t>(a)] || infinite_mass_[static_cast<std::size_t>(b)]) return;
     int ra = islandOf(a), rb = islandOf(b);
     if (ra == rb) return;
     if (rb < ra) std::swap(ra, rb);

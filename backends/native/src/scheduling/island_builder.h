@@ -12,16 +12,16 @@ namespace vroc::native {
 
 class IslandBuilder {
 public:
-    /// Every body its own island; `is_static[i]` bodies never join one.
-    void reset(const std::vector<bool>& is_static);
-    /// Joins the islands of bodies a and b (no effect if either is static).
+    /// Every body its own island; `infinite_mass[i]` bodies (static or tracked) never join one: they are ground.
+    void reset(const std::vector<bool>& infinite_mass);
+    /// Joins the islands of bodies a and b (no effect if either has infinite mass).
     void join(int a, int b);
-    /// The island of `body`: its smallest body index (-1 for a static body).
+    /// The island of `body`: its smallest body index (-1 for a body of infinite mass).
     int islandOf(int body);
 
 private:
     std::vector<int> parent_;
-    std::vector<bool> is_static_;
+    std::vector<bool> infinite_mass_;
 };
 
 }  // namespace vroc::native

@@ -18,10 +18,10 @@ void sortUnique(std::vector<BodyPair>& v) {
 
 }  // namespace
 
-int SweepAndPrune::addBody(const Aabb& box, bool is_static) {
+int SweepAndPrune::addBody(const Aabb& box, bool infinite_mass) {
     const int body = static_cast<int>(boxes_.size());
     boxes_.push_back(box);
-    is_static_.push_back(is_static ? 1 : 0);
+    infinite_mass_.push_back(infinite_mass ? 1 : 0);
     removed_.push_back(0);
     setAabb(body, box);
     // Appended after every other end point, lower before upper: as if the box came from +inf.
@@ -63,7 +63,7 @@ void SweepAndPrune::setAabb(int body, const Aabb& box) {
 }
 
 bool SweepAndPrune::pairAllowed(int x, int y) const {
-    return x != y && !(is_static_[x] && is_static_[y]) && !removed_[x] && !removed_[y];
+    return x != y && !(infinite_mass_[x] && infinite_mass_[y]) && !removed_[x] && !removed_[y];
 }
 
 void SweepAndPrune::writeValues() {

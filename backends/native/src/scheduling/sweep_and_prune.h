@@ -36,7 +36,7 @@ class SweepAndPrune {
 public:
     /// Adds a body with its box; returns its index (indices are never reused). Takes effect at
     /// the next update(): the body enters from +inf, so its overlaps are found by the sort.
-    int addBody(const Aabb& box, bool is_static);
+    int addBody(const Aabb& box, bool infinite_mass);
     /// Removes the body and its pairs immediately.
     void removeBody(int body);
     /// New box for the body [m, world], used by the next update(). NaN bounds become ±inf
@@ -45,11 +45,11 @@ public:
     /// Re-sorts the three axes and updates the overlapping pair set.
     void update();
 
-    /// Overlapping pairs (not both static), sorted by (a, b).
+    /// Overlapping pairs (not both of infinite mass: static or tracked), sorted by (a, b).
     const std::vector<BodyPair>& pairs() const { return pairs_; }
     const SweepAndPruneStats& stats() const { return stats_; }
     int bodyCount() const { return static_cast<int>(boxes_.size()); }
-    bool isStatic(int body) const { return is_static_[body] != 0; }
+    bool hasInfiniteMass(int body) const { return infinite_mass_[body] != 0; }
 
 private:
     struct EndPoint {
@@ -69,7 +69,7 @@ private:
     bool pairAllowed(int x, int y) const;
 
     std::vector<Aabb> boxes_;
-    std::vector<std::uint8_t> is_static_;
+    std::vector<std::uint8_t> infinite_mass_;
     std::vector<std::uint8_t> removed_;
     std::vector<EndPoint> axes_[3];
     std::vector<BodyPair> pairs_;     // sorted

@@ -60,7 +60,9 @@ public:
     virtual int bodyCount() const = 0;
     virtual BodyState bodyState(int body) const = 0;
     /// Sets a virtual body's pose and velocities directly (devices grab and throw through this).
-    /// Ignored for real (static) bodies.
+    /// For a tracked body it is a tracker sample: the body takes this pose at the current time and
+    /// from then on moves at these velocities (linear of its origin, angular; no gravity, and
+    /// collisions never change them) until the next call. Ignored for real (static) bodies.
     virtual void setBodyState(int body, const BodyState& state) = 0;
     /// Applies an impulse [N s] at a world point [m] to a virtual body.
     virtual void applyImpulse(int body, const Vec3& impulse, const Vec3& world_point) = 0;
@@ -92,6 +94,7 @@ struct BackendCapabilities {
     Support hull = Support::Unsupported;       ///< convex polyhedra (vertices + faces)
     Support compound = Support::Unsupported;   ///< several convex parts on one rigid body
     Support restitution = Support::Unsupported;   ///< Newton's coefficient per collision
+    Support tracked = Support::Unsupported;       ///< moving bodies of infinite mass (role "tracked")
     FrictionModel friction = FrictionModel::Cone;
     bool continuous_collision = false;   ///< no tunnelling at any speed (time of impact)
     bool deterministic = true;           ///< same scene, settings and build give the same bits

@@ -1,10 +1,16 @@
 /* SPDX-License-Identifier: MIT
- * VROC device-plugin ABI, version 1 (docs/plugin-abi.md). Plain C, usable from C and C++.
+ * VROC device-plugin ABI, versions 1 and 2 (docs/plugin-abi.md). Plain C, usable from C and C++.
  *
  * A plugin is a shared library exporting exactly one symbol, vroc_plugin_negotiate. The host fills
  * a VrocHostInfo (accepted ABI range, version string, services) and an empty VrocPluginInfo whose
  * header says how large the host's struct is; the plugin fills in its chosen ABI version, name,
  * version, device count, capability union and a pointer to its const function table.
+ *
+ * ABI 2 adds the output direction: a device declaring VROC_CAP_FORCE_OUTPUT receives forces and
+ * torques through VrocDeviceApi.send_force (a VrocForceCommand). The table of an ABI-2 plugin is
+ * the ABI-1 table with send_force appended. A host accepting 1..2 loads ABI-1 plugins unchanged and
+ * never sends them forces (it never calls the ABI-1 set_force either, and never reads past an
+ * ABI-1 table's struct_size).
  *
  * Conventions (after OpenXR, CLAP, gz-plugin, MuJoCo):
  * - Every struct starts with struct_type, struct_version, struct_size. The writer of a struct
@@ -29,7 +35,8 @@
 extern "C" {
 #endif
 
-#define VROC_PLUGIN_ABI_VERSION 1u
+#define VROC_PLUGIN_ABI_VERSION 2u     /* the newest version this header describes */
+#define VROC_PLUGIN_ABI_VERSION_MIN 1u /* the oldest version a current host still accepts */
 #define VROC_PLUGIN_ENTRY_POINT "vroc_plugin_negotiate"
 
 #if defined(__GNUC__)
@@ -58,6 +65,7 @@ extern "C" {
 #define VROC_STRUCT_DEVICE_DESC 5u
 #define VROC_STRUCT_POSE_SAMPLE 6u
 #define VROC_STRUCT_CONTROL_STATE 7u
+#define VROC_STRUCT_FORCE_COMMAND 8u /* ABI 2 */
 
 /* ---- log severities ------------------------------------------------------------------------ */
 #define VROC_LOG_DEBUG 0
@@ -69,7 +77,7 @@ extern "C" {
 #define VROC_CAP_POSE_SOURCE (1ull << 0)        /* get_pose gives poses */
 #define VROC_CAP_BUTTONS (1ull << 1)            /* get_controls gives buttons */
 #define VROC_CAP_ANALOG_AXES (1ull << 2)        /* get_controls gives analog axes */
-#define VROC_CAP_FORCE_OUTPUT (1ull << 3)       /* set_force is non-null */
+#define VROC_CAP_FORCE_OUTPUT (1ull << 3)       /* takes forces: ABI 2 send_force (ABI 1: set_force) */
 #define VROC_CAP_POSITION (1ull << 8)           /* poses carry a position */
 #define VROC_CAP_ORIENTATION (1ull << 9)        /* poses carry an orientation */
 #define VROC_CAP_VELOCITY (1ull << 10)          /* poses carry linear and angular velocity */
@@ -129,12 +137,15 @@ typedef struct VrocHostInfo {
 struct VrocDeviceDesc;
 struct VrocPoseSample;
 struct VrocControlState;
+struct VrocForceCommand;
 
 /* The plugin's function table: static const data in the plugin. handle arguments come from
- * create. Every function is callable from any thread; get_pose and get_controls never block. */
+ * create. Every function is callable from any thread; get_pose, get_controls and send_force never
+ * block. A reader of a table (the host, or a decorator reading an inner plugin's table) touches
+ * send_force only if struct_size >= VROC_DEVICE_API_SIZE_V2: an ABI-1 table ends before it. */
 typedef struct VrocDeviceApi {
     uint32_t struct_type;    /* VROC_STRUCT_DEVICE_API */
-    uint32_t struct_version; /* 1 */
+    uint32_t struct_version; /* 1 for an ABI-1 table, 2 with send_force */
     uint64_t struct_size;    /* sizeof(VrocDeviceApi) as the plugin compiled it */
     /* Fills *out (header set by the host) for device index < device_count. */
     int32_t (*describe)(uint32_t device_index, struct VrocDeviceDesc* out);
@@ -156,10 +167,22 @@ typedef struct VrocDeviceApi {
     /* Copies the last error text of `handle` (or of the last failed create when handle is NULL)
      * into buffer (always NUL-terminated when size > 0). Returns the full text length. */
     int32_t (*last_error)(VrocDeviceHandle handle, char* buffer, uint64_t size);
-    /* Force/torque feedback [N, N m, base frame]; NULL unless VROC_CAP_FORCE_OUTPUT. */
+    /* ABI 1 only: force/torque feedback [N, N m, base frame], non-null if an ABI-1 device declares
+     * VROC_CAP_FORCE_OUTPUT. No VROC host calls it; ABI-2 plugins leave it NULL. */
     int32_t (*set_force)(VrocDeviceHandle handle, uint32_t sensor, const double force[3],
                          const double torque[3]);
+    /* ---- ABI 2 ---- */
+    /* Hands the device one force command (header set by the host, see VrocForceCommand). Required
+     * (non-null) if any device declares VROC_CAP_FORCE_OUTPUT, else may be NULL. Returns < 0 and
+     * sets last_error on failure (bad header, non-finite value, sensor out of range, I/O). The host
+     * sends forces only to ABI-2 devices whose caps include VROC_CAP_FORCE_OUTPUT, and only finite
+     * values. The plugin copies what it needs; *command is valid only during the call. */
+    int32_t (*send_force)(VrocDeviceHandle handle, const struct VrocForceCommand* command);
 } VrocDeviceApi;
+
+/* Table sizes: an ABI-1 table ends after set_force, an ABI-2 table after send_force. */
+#define VROC_DEVICE_API_SIZE_V1 (offsetof(VrocDeviceApi, set_force) + sizeof(void (*)(void)))
+#define VROC_DEVICE_API_SIZE_V2 (offsetof(VrocDeviceApi, send_force) + sizeof(void (*)(void)))
 
 /* Output of vroc_plugin_negotiate. The host sets the header (its struct size); the plugin must
  * not write past struct_size and fails with VROC_ERROR_ABI if it is smaller than it needs. */
@@ -218,6 +241,23 @@ typedef struct VrocControlState {
     uint32_t reserved;       /* 0 */
     double axes[VROC_MAX_AXES]; /* normalised deflections in [-1, 1] */
 } VrocControlState;
+
+/* ABI 2: a force and torque for a device to display (a haptic handle, a force-feedback arm) or
+ * record. The wrench is the one the simulation applies to the user's hand: it acts at the origin
+ * of `sensor` (the tracked point whose pose get_pose reports) and the torque is taken about that
+ * origin; both are expressed in the base frame. time_ns is the host time the wrench was computed
+ * for (the simulation time of the step). Successive commands replace each other: the device
+ * displays the newest one until the next arrives; a zero wrench ends contact. */
+typedef struct VrocForceCommand {
+    uint32_t struct_type;    /* VROC_STRUCT_FORCE_COMMAND */
+    uint32_t struct_version; /* 1 */
+    uint64_t struct_size;    /* sizeof(VrocForceCommand) as the host compiled it */
+    int64_t time_ns;         /* host time the wrench applies at [ns] */
+    uint32_t sensor;         /* the sensor whose origin the wrench acts at */
+    uint32_t flags;          /* 0 (reserved) */
+    double force[3];         /* [N] base frame, acting at the sensor origin */
+    double torque[3];        /* [N m] base frame, about the sensor origin */
+} VrocForceCommand;
 
 /* The one exported symbol. Returns >= 0 on success; the host still validates *out. */
 typedef int32_t (*VrocNegotiateFn)(const VrocHostInfo* host, VrocPluginInfo* out);

@@ -22,6 +22,12 @@ struct StepTimes {
 /// Summarises per-step wall times [µs] (empty input gives all zeros).
 StepTimes summarizeStepTimes(std::vector<double> step_us);
 
+/// A file a run wrote besides trajectory.csv, events.csv and run.json (e.g. `vroc run --sound`).
+struct RunOutput {
+    std::string file;          ///< path as given (relative to the working directory, or absolute)
+    std::string description;   ///< one line: what it holds and how it was made
+};
+
 struct RunRecord {
     std::string scene_name;
     std::string scene_file;                    ///< as given on the command line
@@ -46,6 +52,7 @@ struct RunRecord {
     std::string state_hash;                    ///< 16 hex digits, vroc::stateHash of the final state
     BuildInfo build;
     std::string command_line;                  ///< how the run was started ("" if not by the CLI)
+    std::map<std::string, RunOutput> outputs;  ///< further files by role ("sound"); omitted from run.json if empty
 };
 
 /// Pretty-printed JSON text (2-space indent, trailing newline). Non-finite statistics become null.

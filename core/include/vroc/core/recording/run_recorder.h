@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "vroc/core/backend.h"
 #include "vroc/core/scene.h"
@@ -26,6 +27,16 @@ struct RunRequest {
     /// Called after each frame with (frames done, total); returning false stops the run, which
     /// then fails with RunError("interrupted ...") and leaves no run.json. May be empty.
     std::function<bool(std::int64_t, std::int64_t)> progress;
+    /// Called after each frame with that frame's collision events (as written to events.csv), e.g.
+    /// for `vroc run --sound`. May be empty.
+    std::function<void(const std::vector<CollisionEvent>&)> on_events;
+    /// Called after the last frame, once trajectory.csv and events.csv are in place and before
+    /// run.json is written: writes further outputs (atomically) and names them in
+    /// RunRecord::outputs. If it throws, the run fails like any other: no run.json. May be empty.
+    std::function<void(RunRecord&)> finish_outputs;
+    /// Called before each frame's stepFrame with the backend and the frame's start time [s], e.g.
+    /// for `vroc run --track` (tracked bodies take their device's pose). May be empty.
+    std::function<void(Backend&, double)> before_frame;
 };
 
 /// Frames needed to cover `duration` with steps of `dt`: duration/dt rounded to the nearest integer

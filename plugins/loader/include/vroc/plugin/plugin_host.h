@@ -32,6 +32,9 @@ struct HostOptions {
     bool use_default_dirs = true;          ///< program-relative and build plugin directories
     LogSink log;                           ///< default: warnings and errors to stderr
     std::function<int64_t()> clock;        ///< default: steady_clock (CLOCK_MONOTONIC) [ns]
+    /// Highest plugin ABI offered in negotiation (the host accepts VROC_PLUGIN_ABI_VERSION_MIN up to
+    /// this). 1 makes the host behave as an ABI-1 host (compatibility tests); must be 1 or 2.
+    uint32_t abi_max = VROC_PLUGIN_ABI_VERSION;
 };
 
 class PluginHost {
