@@ -290,6 +290,24 @@ Vec3 JsonReader::vec3() const {
     return Vec3(element(0).number(), element(1).number(), element(2).number());
 }
 
+Vec3 JsonReader::vec3Within(double max_abs, std::string_view unit) const {
+    const Vec3 v = vec3();
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(v[i]) <= max_abs))
+            element(static_cast<std::size_t>(i))
+                .fail(fmt::format("expected a number in [-{}, {}]{} (the accepted range, docs/scene-format.md), got {}",
+                                  max_abs, max_abs, unit, v[i]));
+    return v;
+}
+
+double JsonReader::positiveIn(double lo, double hi, std::string_view unit) const {
+    const double v = positive(unit);
+    if (!(v >= lo && v <= hi))
+        fail(fmt::format("expected a number in [{}, {}]{} (the accepted range, docs/scene-format.md), got {}", lo, hi,
+                         unit, v));
+    return v;
+}
+
 Quat JsonReader::quaternion() const {
     requireType(value_->is_array() && value_->size() == 4, "a quaternion [x, y, z, w]");
     double x = element(0).number(), y = element(1).number(), z = element(2).number(), w = element(3).number();

@@ -62,6 +62,10 @@ public:
     std::string string() const;
     bool boolean() const;
     Vec3 vec3() const;                                ///< [x, y, z]
+    /// [x, y, z] with every |component| <= max_abs; the message names the component and the range.
+    Vec3 vec3Within(double max_abs, std::string_view unit) const;
+    /// > 0 (the `positive` message first), then in [lo, hi].
+    double positiveIn(double lo, double hi, std::string_view unit) const;
     /// [x, y, z, w] (the file order), normalised; fails if |q| < 1e-9.
     Quat quaternion() const;
 

@@ -13,6 +13,7 @@
 #include <fmt/ranges.h>
 
 #include "did_you_mean.h"
+#include "scene_limits.h"
 #include "scene_loader_internal.h"
 #include "sha256.h"
 #include "vroc/core/errors.h"
@@ -85,7 +86,7 @@ BodyRole readRole(const JsonReader& role) {
 }
 
 MassProperties readMassProperties(const JsonReader& body, const Shape& shape) {
-    const double mass = body.at("mass").positive(" [kg]");
+    const double mass = body.at("mass").positiveIn(scene_limits::kMinMass, scene_limits::kMaxMass, " [kg]");
     MassProperties props;
     try {
         props = massProperties(shape, mass);
@@ -105,7 +106,7 @@ Body readBody(const JsonReader& r, const std::vector<Material>& materials, const
     body.role = readRole(r.at("role"));
     body.material = findMaterial(r.at("material"), materials);
     body.shape = readShape(r.at("shape"), base_dir);
-    body.pose.position = r.at("position").vec3();
+    body.pose.position = r.at("position").vec3Within(scene_limits::kMaxCoordinate, " [m]");
     if (auto q = r.find("orientation")) body.pose.orientation = q->quaternion();
     if (body.role == BodyRole::Real) {
         rejectDynamicKeys(r);
@@ -119,8 +120,9 @@ Body readBody(const JsonReader& r, const std::vector<Material>& materials, const
             t->fail("`tracking` is only allowed on a tracked body; make the body \"tracked\" or remove it");
         body.mass_properties = readMassProperties(r, body.shape);
     }
-    if (auto v = r.find("linear_velocity")) body.linear_velocity = v->vec3();
-    if (auto w = r.find("angular_velocity")) body.angular_velocity = w->vec3();
+    if (auto v = r.find("linear_velocity")) body.linear_velocity = v->vec3Within(scene_limits::kMaxSpeed, " [m/s]");
+    if (auto w = r.find("angular_velocity"))
+        body.angular_velocity = w->vec3Within(scene_limits::kMaxAngularSpeed, " [rad/s]");
     return body;
 }
 
@@ -149,9 +151,12 @@ Scene readScene(const JsonReader& root, const std::filesystem::path& base_dir) {
     Scene scene;
     scene.name = root.at("name").string();
     if (auto d = root.find("description")) scene.description = d->string();
-    if (auto g = root.find("gravity")) scene.gravity = g->vec3();
-    if (auto dt = root.find("frame_dt")) scene.frame_dt = dt->positive(" [s]");
-    if (auto cd = root.find("collision_distance")) scene.collision_distance = cd->positive(" [m]");
+    if (auto g = root.find("gravity")) scene.gravity = g->vec3Within(scene_limits::kMaxAcceleration, " [m/s^2]");
+    if (auto dt = root.find("frame_dt"))
+        scene.frame_dt = dt->positiveIn(scene_limits::kMinFrameDt, scene_limits::kMaxFrameDt, " [s]");
+    if (auto cd = root.find("collision_distance"))
+        scene.collision_distance =
+            cd->positiveIn(scene_limits::kMinCollisionDistance, scene_limits::kMaxCollisionDistance, " [m]");
     scene.materials = readMaterials(root.at("materials"));
     scene.bodies = readBodies(root.at("bodies"), scene.materials, base_dir);
     return scene;

@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "mesh_import.h"
+#include "scene_limits.h"
 #include "scene_loader_internal.h"
 #include "vroc/core/errors.h"
 
@@ -27,31 +28,35 @@ ConvexPolyhedron hullOf(const std::vector<Vec3>& points, const JsonReader& where
 
 Shape readSphere(const JsonReader& r) {
     r.requireObject({"radius"});
-    return Shape::sphere(r.at("radius").positive(" [m]"));
+    return Shape::sphere(r.at("radius").positiveIn(scene_limits::kMinSize, scene_limits::kMaxSize, " [m]"));
 }
 
 Shape readBox(const JsonReader& r) {
     r.requireObject({"half_extents"});
     const JsonReader he = r.at("half_extents");
     he.vec3();   // shape and type first, then each component's range
-    return Shape::box(Vec3(he.element(0).positive(" [m]"), he.element(1).positive(" [m]"),
-                           he.element(2).positive(" [m]")));
+    auto extent = [&](std::size_t i) {
+        return he.element(i).positiveIn(scene_limits::kMinSize, scene_limits::kMaxSize, " [m]");
+    };
+    return Shape::box(Vec3(extent(0), extent(1), extent(2)));
 }
 
 Shape readHull(const JsonReader& r) {
     r.requireObject({"points"});
     const JsonReader pts = r.at("points");
     std::vector<Vec3> points;
-    for (std::size_t i = 0; i < pts.arraySize(); ++i) points.push_back(pts.element(i).vec3());
+    for (std::size_t i = 0; i < pts.arraySize(); ++i)
+        points.push_back(pts.element(i).vec3Within(scene_limits::kMaxCoordinate, " [m]"));
     return Shape::convexHull(hullOf(points, pts, fmt::format("hull of {} points", points.size())));
 }
 
 Vec3 readScale(const std::optional<JsonReader>& r) {
     if (!r) return Vec3::Ones();
-    if (r->isNumber()) return Vec3::Constant(r->positive(""));
+    auto factor = [](const JsonReader& f) { return f.positiveIn(scene_limits::kMinScale, scene_limits::kMaxScale, ""); };
+    if (r->isNumber()) return Vec3::Constant(factor(*r));
     if (!r->isArray() || r->arraySize() != 3)
         r->fail(fmt::format("expected a number or [sx, sy, sz], got {}", r->describe()));
-    return Vec3(r->element(0).positive(""), r->element(1).positive(""), r->element(2).positive(""));
+    return Vec3(factor(r->element(0)), factor(r->element(1)), factor(r->element(2)));
 }
 
 Shape readMesh(const JsonReader& r, const std::filesystem::path& base_dir) {
@@ -66,6 +71,13 @@ Shape readMesh(const JsonReader& r, const std::filesystem::path& base_dir) {
             m->fail(fmt::format("expected \"hull\" or \"parts\", got \"{}\"", mode));
     }
     const std::vector<MeshPoints> meshes = importMeshPoints(path, scale, file.origin() + ": " + file.path());
+    for (const MeshPoints& m : meshes)
+        for (const Vec3& v : m.vertices)
+            if (!(v.cwiseAbs().maxCoeff() <= scene_limits::kMaxCoordinate))
+                file.fail(fmt::format("mesh '{}' scaled by ({}, {}, {}) has a vertex at ({}, {}, {}) m, outside the "
+                                      "accepted range of +-{} m per coordinate (docs/scene-format.md)",
+                                      path, scale.x(), scale.y(), scale.z(), v.x(), v.y(), v.z(),
+                                      scene_limits::kMaxCoordinate));
     if (mode == "hull") {
         std::vector<Vec3> all;
         for (const MeshPoints& m : meshes) all.insert(all.end(), m.vertices.begin(), m.vertices.end());
@@ -81,7 +93,7 @@ Shape readMesh(const JsonReader& r, const std::filesystem::path& base_dir) {
 
 Pose readPartPose(const JsonReader& part) {
     Pose pose;
-    if (auto p = part.find("position")) pose.position = p->vec3();
+    if (auto p = part.find("position")) pose.position = p->vec3Within(scene_limits::kMaxCoordinate, " [m]");
     if (auto q = part.find("orientation")) pose.orientation = q->quaternion();
     return pose;
 }
@@ -127,12 +139,14 @@ Mat3 readInertia(const JsonReader& r) {
     if (!r.isArray() || r.arraySize() != 3) r.fail(fmt::format("{}, got {}", expected, r.describe()));
     Mat3 inertia = Mat3::Zero();
     if (r.element(0).isNumber()) {
-        for (int i = 0; i < 3; ++i) inertia(i, i) = r.element(i).positive(" [kg m^2]");
+        for (int i = 0; i < 3; ++i)
+            inertia(i, i) = r.element(i).positiveIn(scene_limits::kMinMoment, scene_limits::kMaxMoment, " [kg m^2]");
     } else {
         for (int i = 0; i < 3; ++i) {
             const JsonReader row = r.element(i);
             if (!row.isArray() || row.arraySize() != 3) row.fail(fmt::format("{}, got {}", expected, row.describe()));
-            for (int j = 0; j < 3; ++j) inertia(i, j) = row.element(j).number();
+            for (int j = 0; j < 3; ++j)
+                inertia(i, j) = row.element(j).inRange(-scene_limits::kMaxMoment, scene_limits::kMaxMoment, " [kg m^2]");
         }
         const double scale = inertia.cwiseAbs().maxCoeff();
         if (!((inertia - inertia.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * scale))

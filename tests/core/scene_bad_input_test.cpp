@@ -195,6 +195,39 @@ TEST(SceneBadInput, TrackedBodyTakesNoMassAndOnlyItHasTracking) {
                 {"bodies[1].tracking: `tracking` is only allowed on a tracked body"});
 }
 
+// Magnitudes outside the accepted ranges (docs/scene-format.md) are rejected with the field named,
+// so no backend starts from a state it cannot represent (a 1e308 position once loaded, and then
+// two backends gave two answers).
+TEST(SceneBadInput, ValuesOutsideTheAcceptedRanges) {
+    const std::string range = "(the accepted range, docs/scene-format.md)";
+    expectError(withBall(R"(, "linear_velocity": [0, 2e4, 0])"),
+                {"bodies[1].linear_velocity[1]: expected a number in [-10000, 10000] [m/s]", range, "got 20000"});
+    expectError(withBall(R"(, "angular_velocity": [0, 0, -1e308])"),
+                {"bodies[1].angular_velocity[2]: expected a number in [-100000, 100000] [rad/s]", "got -1e+308"});
+    expectError(withBall("", R"({"sphere": {"radius": 0.1}})", "1e10"),
+                {"bodies[1].mass: expected a number in [1e-09, 1000000000] [kg]", "got 10000000000"});
+    expectError(withBall("", R"({"sphere": {"radius": 0.1}})", "1e-12"), {"bodies[1].mass: expected a number in"});
+    expectError(withBall("", R"({"sphere": {"radius": 1e-7}})"),
+                {"bodies[1].shape.sphere.radius: expected a number in [1e-06, 1000000] [m]"});
+    expectError(withBall("", R"({"box": {"half_extents": [0.1, 2e6, 0.1]}})"),
+                {"bodies[1].shape.box.half_extents[1]: expected a number in [1e-06, 1000000] [m]"});
+    expectError(withBall("", R"({"hull": {"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1e300]]}})"),
+                {"bodies[1].shape.hull.points[3][2]: expected a number in [-1000000, 1000000] [m]"});
+    expectError(withBall("", R"({"mesh": {"file": "tetra.obj", "scale": 1e10}})"),
+                {"bodies[1].shape.mesh.scale: expected a number in [1e-09, 1000000000]"});
+    expectError(withBall("", R"({"mesh": {"file": "tetra.obj", "scale": 1e8}})"),
+                {"bodies[1].shape.mesh.file: mesh", "outside the accepted range of +-1000000 m per coordinate"});
+    expectError(withBall("", R"({"sphere": {"radius": 0.1}}, "inertia": [1, 1e31, 1])"),
+                {"bodies[1].inertia[1]: expected a number in [1e-30, 1e+30] [kg m^2]"});
+    expectError(sceneWith(R"({"name": "floor", "role": "real", "material": "rubber", "position": [1e308, 0, 0],
+                              "shape": {"box": {"half_extents": [1, 1, 1]}}})"),
+                {"bodies[0].position[0]: expected a number in [-1000000, 1000000] [m]", "got 1e+308"});
+    expectError(sceneWith(kFloor, R"("gravity": [0, 0, -1e5], )"), {": gravity[2]: expected a number in [-10000, 10000] [m/s^2]"});
+    expectError(sceneWith(kFloor, R"("frame_dt": 60, )"), {": frame_dt: expected a number in [1e-06, 10] [s]"});
+    expectError(sceneWith(kFloor, R"("collision_distance": 2, )"),
+                {": collision_distance: expected a number in [1e-09, 1] [m]"});
+}
+
 TEST(SceneBadInput, NonPositiveRadiusOrExtent) {
     expectError(withBall("", R"({"sphere": {"radius": 0}})"), {"bodies[1].shape.sphere.radius: expected a number > 0 [m], got 0"});
     expectError(withBall("", R"({"sphere": {"radius": -0.1}})"), {"bodies[1].shape.sphere.radius: expected a number > 0 [m], got -0.1"});

@@ -6,6 +6,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <deque>
+#include <mutex>
 
 #include "plugin_validation.h"
 #include "vroc/core/errors.h"
@@ -17,15 +19,24 @@
 namespace vroc::plugins {
 
 // Plugins keep the services pointer for as long as their library stays loaded, and a library
-// opened by two hosts stays loaded after the first host goes. So the context and services are
-// never freed (a few dozen bytes per host); `host` is cleared when the host dies and the
-// services then fall back to stderr / a steady clock / failure.
+// opened by two hosts stays loaded after the first host goes (its services pointer may be the
+// host that went). So a context lives as long as the process: the pool below owns every one (a
+// few dozen bytes per host); `host` is cleared when the host dies and the services then fall
+// back to stderr / a steady clock / failure.
 struct PluginHost::Context {
     std::atomic<PluginHost*> host{nullptr};
     VrocHostServices services{};
 };
 
 namespace {
+
+/// Owns every host's context until the process ends (stable addresses: a deque never moves them).
+PluginHost::Context& newContext() {
+    static std::mutex mutex;
+    static std::deque<PluginHost::Context> pool;
+    const std::lock_guard<std::mutex> lock(mutex);
+    return pool.emplace_back();
+}
 
 int64_t steadyNs() {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
@@ -73,7 +84,7 @@ void defaultLog(int32_t severity, const std::string& plugin, const std::string& 
 }  // namespace
 
 PluginHost::PluginHost(HostOptions options)
-    : options_(std::move(options)), version_(std::string("vroc ") + VROC_VERSION_STRING), context_(new Context) {
+    : options_(std::move(options)), version_(std::string("vroc ") + VROC_VERSION_STRING), context_(&newContext()) {
     if (!options_.log) options_.log = defaultLog;
     if (options_.abi_max < VROC_PLUGIN_ABI_VERSION_MIN || options_.abi_max > VROC_PLUGIN_ABI_VERSION)
         throw InputError("plugin host: abi_max " + std::to_string(options_.abi_max) + " is outside " +

@@ -62,7 +62,7 @@ public:
     void log(int32_t severity, const std::string& plugin, const std::string& message) const;
     const std::string& hostVersion() const { return version_; }
 
-    struct Context;  // what plugins' services point at; outlives the host (see plugin_host.cpp)
+    struct Context;  // what plugins' services point at; lives as long as the process (plugin_host.cpp)
 
 private:
     const LoadedPlugin& negotiateAndKeep(const std::string& path, void* library, VrocNegotiateFn negotiate);
@@ -70,7 +70,7 @@ private:
     HostOptions options_;
     std::vector<std::string> dirs_;
     std::string version_;
-    Context* context_;                     // deliberately never freed
+    Context* context_;                     // owned by the process-wide pool (plugin_host.cpp)
     mutable std::recursive_mutex mutex_;   // recursive: predict loads its inner plugin from open()
     std::map<std::string, std::unique_ptr<LoadedPlugin>> plugins_;  // by path
 };
