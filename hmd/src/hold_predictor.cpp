@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The trivial predictors: hold the newest measurement, or extrapolate its velocity.
 #include "vroc/hmd/head_predictor.h"
-#include "vroc/hmd/rotation_vector.h"
+#include "vroc/core/rotation_vector.h"
 #include "kalman_predictor.h"
 
 namespace vroc::hmd {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "kalman_predictor.h"
 
-#include "vroc/hmd/rotation_vector.h"
+#include "vroc/core/rotation_vector.h"
 
 namespace vroc::hmd {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vroc/hmd/rotation_vector.h"
+#include "vroc/core/rotation_vector.h"
 
 namespace vroc::hmd {
 

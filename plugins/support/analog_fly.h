@@ -28,7 +28,7 @@ struct AnalogFly {
     /// The pose after holding `a` for dt seconds from (position, orientation).
     void advance(Eigen::Vector3d& position, Eigen::Quaterniond& orientation, const MouseAxes& a, double dt) const {
         position += linearVelocity(a) * dt;
-        orientation = (orientation * expRotation(bodyRate(a) * dt)).normalized();
+        orientation = (orientation * quatFromRotationVector(bodyRate(a) * dt)).normalized();
     }
     /// The angular velocity in the base frame at `orientation` (the body rate turns with the sensor).
     Eigen::Vector3d angularVelocity(const Eigen::Quaterniond& orientation, const MouseAxes& a) const {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Small rotation helpers shared by the built-in plugins and the loader (rotation vectors in
-// radians, quaternions as Eigen's; the ABI stores them x, y, z, w).
+// Pose helpers shared by the built-in plugins and the loader (quaternions as Eigen's; the ABI
+// stores them x, y, z, w). Rotation vectors: vroc/core/rotation_vector.h.
 #pragma once
 
 #include <cmath>
@@ -9,24 +9,10 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "vroc/core/rotation_vector.h"   // header-only: the exp and log maps of SO(3)
 #include "vroc/plugin/vroc_device_plugin.h"
 
 namespace vroc::plugin_sdk {
-
-/// exp map: the rotation by |rv| radians about rv.
-inline Eigen::Quaterniond expRotation(const Eigen::Vector3d& rv) {
-    const double angle = rv.norm();
-    if (angle < 1e-12) return Eigen::Quaterniond(1.0, 0.5 * rv.x(), 0.5 * rv.y(), 0.5 * rv.z()).normalized();
-    return Eigen::Quaterniond(Eigen::AngleAxisd(angle, rv / angle));
-}
-
-/// log map: the rotation vector of q, angle in [0, pi] (the shorter way round).
-inline Eigen::Vector3d logRotation(Eigen::Quaterniond q) {
-    if (q.w() < 0) q.coeffs() = -q.coeffs();
-    const double s = q.vec().norm();
-    if (s < 1e-12) return 2.0 * q.vec();
-    return (2.0 * std::atan2(s, q.w()) / s) * q.vec();
-}
 
 inline Eigen::Vector3d positionOf(const VrocPoseSample& s) {
     return {s.position[0], s.position[1], s.position[2]};

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "vroc/hmd/registration_study.h"
-#include "vroc/hmd/rotation_vector.h"
+#include "vroc/core/rotation_vector.h"
 
 namespace vroc::hmd {
 namespace {

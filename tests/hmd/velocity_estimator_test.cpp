@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "vroc/hmd/rotation_vector.h"
+#include "vroc/core/rotation_vector.h"
 #include "vroc/play/velocity_estimator.h"
 
 namespace vroc::play {
@@ -18,7 +18,7 @@ TEST(VelocityEstimator, QuadraticFitIsExactForConstantAccelerationAndSteadySpin)
     double t = 0.0;
     for (int i = 0; i < 10; ++i) {
         t = 0.3 + i / 60.0;
-        est.add(t, {p0 + v0 * t + 0.5 * acc * t * t, hmd::quatFromRotationVector(w * t) * q0});
+        est.add(t, {p0 + v0 * t + 0.5 * acc * t * t, quatFromRotationVector(w * t) * q0});
     }
     EXPECT_LT((est.linearVelocity() - (v0 + acc * t)).norm(), 1e-9);
     EXPECT_LT((est.angularVelocity() - w).norm(), 1e-9);

@@ -61,7 +61,7 @@ public:
             p[i] += tracker_.noise_pos * uniformNoise(measured, i);
             noise_rv[i] = tracker_.noise_rot * uniformNoise(measured, 3 + i);
         }
-        const Eigen::Quaterniond q = expRotation(noise_rv) * s.orientation;
+        const Eigen::Quaterniond q = quatFromRotationVector(noise_rv) * s.orientation;
         const bool v = tracker_.velocities;
         writePose(out, measured, 0, p, q, kPoseValidTracked, v ? &s.linear_velocity : nullptr,
                   v ? &s.angular_velocity : nullptr);

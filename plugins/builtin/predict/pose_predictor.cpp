@@ -28,7 +28,7 @@ void PosePredictor::add(const Measurement& m) {
             const double dt = secondsOf(m.time_ns - last_->time_ns);
             // The measured orientation as an increment about the reference (small: the reference
             // follows the estimate after every update).
-            const Eigen::Vector3d z = logRotation(m.orientation * reference_.conjugate());
+            const Eigen::Vector3d z = rotationVectorFromQuat(m.orientation * reference_.conjugate());
             for (int i = 0; i < 3; ++i) {
                 position_filters_[i].predict(dt);
                 position_filters_[i].update(m.position[i], v[i], has_v);
@@ -38,7 +38,7 @@ void PosePredictor::add(const Measurement& m) {
             // Re-centre: fold the estimated increment into the reference.
             const Eigen::Vector3d increment(rotation_filters_[0].value(), rotation_filters_[1].value(),
                                             rotation_filters_[2].value());
-            reference_ = (expRotation(increment) * reference_).normalized();
+            reference_ = (quatFromRotationVector(increment) * reference_).normalized();
             for (int i = 0; i < 3; ++i) rotation_filters_[i].shift(-increment[i]);
         }
     }
@@ -63,8 +63,8 @@ Prediction PosePredictor::constantVelocity(double ahead) const {
     if (last_->linear_velocity) v = *last_->linear_velocity;
     else if (differences) v = (last_->position - previous_->position) / dt;
     if (last_->angular_velocity) w = *last_->angular_velocity;
-    else if (differences) w = logRotation(last_->orientation * previous_->orientation.conjugate()) / dt;
-    return {last_->position + v * ahead, (expRotation(w * ahead) * last_->orientation).normalized(), v, w};
+    else if (differences) w = rotationVectorFromQuat(last_->orientation * previous_->orientation.conjugate()) / dt;
+    return {last_->position + v * ahead, (quatFromRotationVector(w * ahead) * last_->orientation).normalized(), v, w};
 }
 
 Prediction PosePredictor::kalman(double ahead) const {
@@ -78,7 +78,7 @@ Prediction PosePredictor::kalman(double ahead) const {
         increment[i] = r.extrapolate(ahead);
         out.angular_velocity[i] = r.rate() + r.acceleration() * ahead;
     }
-    out.orientation = (expRotation(increment) * reference_).normalized();
+    out.orientation = (quatFromRotationVector(increment) * reference_).normalized();
     return out;
 }
 

@@ -28,7 +28,7 @@ TrackPose PoseTrack::at(int64_t t) const {
     pose.position = a.position + f * (b.position - a.position);
     pose.orientation = a.orientation.slerp(f, b.orientation);
     pose.linear_velocity = (b.position - a.position) / dt;
-    pose.angular_velocity = logRotation(b.orientation * a.orientation.conjugate()) / dt;
+    pose.angular_velocity = rotationVectorFromQuat(b.orientation * a.orientation.conjugate()) / dt;
     pose.buttons = a.buttons;
     pose.index = static_cast<uint64_t>(upper - samples_.begin() - 1);
     pose.inside = true;

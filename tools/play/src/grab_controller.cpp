@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "vroc/hmd/rotation_vector.h"
+#include "vroc/core/rotation_vector.h"
 
 namespace vroc::play {
 
@@ -67,7 +67,7 @@ void GrabController::couple(const HandInput& in, const BodyState& body, Backend&
     const Vec3 force = gains_.stiffness * (x_target - x_body) + gains_.damping * (v_target - v_body);
     const Mat3 r = body.pose.orientation.toRotationMatrix();
     const Mat3 inertia_world = r * inertia_ * r.transpose();
-    const Vec3 theta = hmd::rotationVectorFromQuat(target.orientation * body.pose.orientation.conjugate());
+    const Vec3 theta = rotationVectorFromQuat(target.orientation * body.pose.orientation.conjugate());
     const Vec3 torque = inertia_world * (w * w * theta + 2.0 * zeta * w * (w_hand - body.angular_velocity));
 
     Vec3 impulse = force * dt;

@@ -6,7 +6,7 @@
 
 #include <Eigen/Dense>
 
-#include "vroc/hmd/rotation_vector.h"
+#include "vroc/core/rotation_vector.h"
 
 namespace vroc::play {
 
@@ -47,7 +47,7 @@ Vec3 VelocityEstimator::angularVelocity() const {
     if (!ready()) return Vec3::Zero();
     const Quat newest = samples_.back().pose.orientation;
     // World-frame rotation from the newest orientation to each sample's; small within a window.
-    return slope([&](const Sample& s) { return hmd::rotationVectorFromQuat(s.pose.orientation * newest.conjugate()); });
+    return slope([&](const Sample& s) { return rotationVectorFromQuat(s.pose.orientation * newest.conjugate()); });
 }
 
 }  // namespace vroc::play
