@@ -21,11 +21,21 @@ deps:
 	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
 
+# Extra CMake options for a new build directory, e.g. CMAKE_FLAGS=-DVROC_WERROR=ON (what CI uses).
+CMAKE_FLAGS ?=
+
 configure: deps
-	@[ -f $(BUILD_DIR)/build.ninja ] || cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release
+	@[ -f $(BUILD_DIR)/build.ninja ] || cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
 
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# `make install PREFIX=/opt/vroc`: libraries, headers, `vroc`, plugins, scenes and the CMake package
+# (find_package(vroc)); README.md, "Install and use as a library".
+PREFIX ?= /usr/local
+.PHONY: install
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 demo: build
 	@scripts/demo.sh $(BUILD_DIR)
@@ -35,18 +45,43 @@ test: build
 
 # The default suite built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
 # directory (nothing shared with $(BUILD_DIR) that could hide a finding); any finding fails.
+# -O1 with line tables only: a third of the -O2 -g build time, and reports still name file:line.
+# Benchmarks are not built (no test runs them).
 # Third-party leaks are suppressed in tests/sanitizers/lsan.supp, each with why. The two tests
 # that start `mpirun` are left out: Open MPI leaks inside MPI_Init from MCA components it has
 # already unloaded, which no suppression can name.
 SANITIZE_DIR ?= build-sanitize
 test-sanitize: deps
-	@[ -f $(SANITIZE_DIR)/build.ninja ] || cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVROC_SANITIZE=ON
+	@[ -f $(SANITIZE_DIR)/build.ninja ] || cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release \
+	  "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -g1 -DNDEBUG" \
+	  -DVROC_SANITIZE=ON -DVROC_BUILD_BENCHMARKS=OFF $(CMAKE_FLAGS)
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_init_order=1 \
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp:print_suppressions=0 \
 	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(SANITIZE_DIR) --output-on-failure -j $(JOBS) -LE long \
 	    -E 'ParallelCli\.(MpiRanksGiveTheSameResultsAsOneProcess|AKilledRankEndsTheJobNamingTheMissingRunsAndResumeFinishesIt)$$'
+
+# Coverage-guided fuzzing (libFuzzer, clang 16; docs/fuzzing.md): builds the targets of tests/fuzz/
+# in their own directory and runs each for FUZZ_SECONDS on a copy of its corpus; fails on any crash,
+# leak or timeout. Executions per target: $(FUZZ_DIR)/fuzz-summary.txt.
+FUZZ_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_PACKAGES := clang-16 libfuzzer-16-dev libclang-rt-16-dev
+.PHONY: fuzz
+fuzz: deps
+	@missing=""; for p in $(FUZZ_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "vroc: installing Debian packages:$$missing"; \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+	@[ -f $(FUZZ_DIR)/build.ninja ] || CC=clang-16 CXX=clang++-16 cmake -S . -B $(FUZZ_DIR) -G Ninja \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVROC_FUZZ=ON -DVROC_BUILD_RENDERER=OFF -DVROC_BUILD_BENCHMARKS=OFF \
+	  -DVROC_WITH_MPI=OFF
+	cmake --build $(FUZZ_DIR) --target fuzz_all -j $(JOBS)
+	scripts/run_fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
 
 test-long: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS) -L long

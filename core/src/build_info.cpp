@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "vroc/core/build_info.h"
 
-// CMake passes these for vroc_core (core/CMakeLists.txt, cmake/BuildInfo.cmake); the fallbacks
+// CMake passes these for vroc_core (core/CMakeLists.txt, cmake/BuildInfo.cmake); the commit comes
+// from a header the build writes at every build (cmake/WriteBuildCommit.cmake). The fallbacks
 // keep the file compiling if someone builds it by hand.
+#if __has_include("vroc_build_commit.h")
+#include "vroc_build_commit.h"
+#endif
 #ifndef VROC_VERSION
 #define VROC_VERSION "unknown"
 #endif

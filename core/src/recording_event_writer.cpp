@@ -3,15 +3,15 @@
 
 #include <cmath>
 
-#include "recording_csv_format.h"
+#include "vroc/core/csv.h"
 #include "vroc/core/errors.h"
 
 namespace vroc::recording {
 
-using detail::appendNumber;
+using csv::appendNumber;
 
 EventWriter::EventWriter(TextSink& sink, const Scene& scene) : sink_(sink), scene_(scene) {
-    for (const auto& body : scene.bodies) names_.push_back(detail::csvField(body.name));
+    for (const auto& body : scene.bodies) names_.push_back(csv::field(body.name));
     buffer_ = std::string(kEventsHeader) + "\n";
 }
 
@@ -40,7 +40,7 @@ void EventWriter::write(std::span<const CollisionEvent> events) {
         ++count_;
         pairs_.insert({std::min(e.body_a, e.body_b), std::max(e.body_a, e.body_b)});
     }
-    if (buffer_.size() >= detail::kFlushBytes) flush();
+    if (buffer_.size() >= kFlushBytes) flush();
 }
 
 void EventWriter::flush() {

@@ -4,9 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 
 #include <nlohmann/json.hpp>
+
+#include "vroc/core/recording/output_dir.h"
 
 namespace vroc::recording {
 namespace {
@@ -80,13 +81,6 @@ std::string toJson(const RunRecord& r) {
     return j.dump(2) + "\n";
 }
 
-std::string utcNowIso8601() {
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char buf[32];
-    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    return buf;
-}
+std::string utcNowIso8601() { return utcNow("%Y-%m-%dT%H:%M:%SZ"); }
 
 }  // namespace vroc::recording

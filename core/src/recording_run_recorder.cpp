@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "vroc/core/errors.h"
+#include "vroc/core/frame_loop.h"
 #include "vroc/core/recording/atomic_output.h"
 #include "vroc/core/recording/event_writer.h"
 #include "vroc/core/recording/trajectory_writer.h"
@@ -97,19 +98,19 @@ void simulate(const RunRequest& request, Backend& backend, RunFiles& files, RunR
     trajectory.writeFrame(0.0, states);
 
     StepTimeSampler step_us;
-    for (std::int64_t frame = 1; frame <= record.steps; ++frame) {
-        if (request.before_frame) request.before_frame(backend, backend.time());
-        const auto start = Clock::now();
-        backend.stepFrame(request.frame_dt);
-        step_us.add(secondsSince(start) * 1e6);
+    FrameHooks hooks;
+    hooks.before_frame = request.before_frame;
+    hooks.after_frame = [&](std::int64_t frame, double step_wall_s, std::vector<CollisionEvent>& frame_events) {
+        step_us.add(step_wall_s * 1e6);
         readStates(backend, states);
         trajectory.writeFrame(backend.time(), states);
-        const std::vector<CollisionEvent> frame_events = backend.takeEvents();
         events.write(frame_events);
         if (request.on_events) request.on_events(frame_events);
         if (request.progress && !request.progress(frame, record.steps))
             throw RunError("interrupted at t = " + number(backend.time()) + " s; no run.json written");
-    }
+        return true;
+    };
+    stepFrames(backend, record.steps, request.frame_dt, hooks);
     trajectory.flush();
     events.flush();
 
@@ -144,19 +145,6 @@ RunRecord initialRecord(const RunRequest& request) {
 }
 
 }  // namespace
-
-std::int64_t frameCount(double duration, double dt) {
-    if (!std::isfinite(dt) || dt <= 0)
-        throw InputError("frame dt must be a finite positive number of seconds (got " + number(dt) + ")");
-    if (!std::isfinite(duration) || duration <= 0)
-        throw InputError("duration must be a finite positive number of seconds (got " + number(duration) + ")");
-    const double ratio = duration / dt;
-    if (ratio > 1e9)
-        throw InputError("duration / dt = " + number(ratio) + " frames; at most 1e9 are allowed");
-    const double nearest = std::round(ratio);
-    const double frames = std::abs(ratio - nearest) <= 1e-9 * nearest ? nearest : std::ceil(ratio);
-    return std::max<std::int64_t>(1, static_cast<std::int64_t>(frames));
-}
 
 RunRecord recordRun(const RunRequest& request) {
     checkRequest(request);

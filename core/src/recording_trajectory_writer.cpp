@@ -3,18 +3,18 @@
 
 #include <cmath>
 
-#include "recording_csv_format.h"
+#include "vroc/core/csv.h"
 #include "vroc/core/errors.h"
 
 namespace vroc::recording {
 
-using detail::appendNumber;
+using csv::appendNumber;
 
 TrajectoryWriter::TrajectoryWriter(TextSink& sink, const Scene& scene) : sink_(sink) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         if (scene.bodies[i].isStatic()) continue;
         bodies_.push_back(static_cast<int>(i));
-        names_.push_back(detail::csvField(scene.bodies[i].name));
+        names_.push_back(csv::field(scene.bodies[i].name));
     }
     buffer_ = std::string(kTrajectoryHeader) + "\n";
 }
@@ -45,7 +45,7 @@ void TrajectoryWriter::writeFrame(double t, std::span<const BodyState> states) {
         buffer_ += '\n';
         ++rows_;
     }
-    if (buffer_.size() >= detail::kFlushBytes) flush();
+    if (buffer_.size() >= kFlushBytes) flush();
 }
 
 void TrajectoryWriter::flush() {

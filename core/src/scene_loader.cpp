@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <string_view>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -162,13 +163,33 @@ Scene readScene(const JsonReader& root, const std::filesystem::path& base_dir) {
     return scene;
 }
 
+// An error message quotes names, keys and paths from the file, which JSON lets hold any control
+// character: escaped as JSON writes them, so the message stays one line ("half_ext\nts" rather
+// than a line break; found by tests/fuzz/scene_loader_fuzz, docs/fuzzing.md).
+std::string oneLine(std::string_view message) {
+    std::string out;
+    for (const char c : message) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u != 0x7f) out += c;
+        else if (c == '\n') out += "\\n";
+        else if (c == '\r') out += "\\r";
+        else if (c == '\t') out += "\\t";
+        else out += fmt::format("\\u{:04x}", u);
+    }
+    return out;
+}
+
 }  // namespace
 
 Scene loadSceneFromString(const std::string& json_text, const std::string& origin) {
-    const JsonDocument document(json_text, origin);
-    Scene scene = readScene(document.root(), std::filesystem::path(origin).parent_path());
-    scene.source_sha256 = sha256Hex(json_text);
-    return scene;
+    try {
+        const JsonDocument document(json_text, origin);
+        Scene scene = readScene(document.root(), std::filesystem::path(origin).parent_path());
+        scene.source_sha256 = sha256Hex(json_text);
+        return scene;
+    } catch (const InputError& e) {
+        throw InputError(oneLine(e.what()));
+    }
 }
 
 Scene loadScene(const std::string& path) {

@@ -2,8 +2,8 @@
 // The recorded-pose CSV format shared by the recorder (loader library) and the replay plugin:
 //   time_ns,sensor,x,y,z,qx,qy,qz,qw,buttons
 // one sample per line after that header line; time on the host clock [ns], position [m] in the
-// base frame, unit quaternion sensor -> base, buttons as a decimal bitmask. Doubles are written
-// with 17 significant digits so a round trip is exact.
+// base frame, unit quaternion sensor -> base, buttons as a decimal bitmask. Numbers are written and
+// read with vroc/core/csv.h: 17 significant digits (an exact round trip), whatever the locale.
 #pragma once
 
 #include <array>

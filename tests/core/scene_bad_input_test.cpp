@@ -262,6 +262,25 @@ TEST(SceneBadInput, UnreadableMesh) {
                 {"bodies[1].shape.mesh.file: cannot read mesh file '" + kDataDir + "/not_a_mesh.xyz'"});
 }
 
+// Found by tests/fuzz/mesh_import_fuzz (docs/fuzzing.md): assimp 5.2.5 never returns from a PLY
+// file without end_header (it loops, allocating); without the loader's check this test hangs until
+// CTest's timeout.
+TEST(SceneBadInput, PlyHeaderWithoutEnd) {
+    expectError(withBall("", R"({"mesh": {"file": "no_end_header.ply"}})"),
+                {"bodies[1].shape.mesh.file: cannot read mesh file '" + kDataDir + "/no_end_header.ply'",
+                 "a PLY header must end with an end_header line"});
+}
+
+// Found by tests/fuzz/scene_loader_fuzz (docs/fuzzing.md): a key or name with a JSON escape such
+// as \n made the message two lines. Control characters are shown escaped, as JSON writes them.
+TEST(SceneBadInput, ControlCharactersInKeysAndNamesStayOnOneLine) {
+    expectError(withBall("", R"({"box": {"half_ext\nts": [0.5, 0.01, 0.01]}})"),
+                {"bodies[1].shape.box", "unknown key `half_ext\\nts`"});
+    expectError(sceneWith(R"({"name": "floor", "role": "real", "material": "rub\tber\u0001", "position": [0, 0, 0],
+                              "shape": {"sphere": {"radius": 1}}})"),
+                {"bodies[0].material: unknown material `rub\\tber\\u0001`"});
+}
+
 TEST(SceneBadInput, UnknownMaterial) {
     expectError(sceneWith(kFloor + R"(, {"name": "ball", "role": "virtual", "material": "rubbr", "mass": 1,
                                         "position": [0, 0, 1], "shape": {"sphere": {"radius": 0.1}}})"),

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "test_backends.h"
-#include "vroc/core/mass_properties.h"
+#include "test_scene_builder.h"
 #include "vroc/play/grab_controller.h"
 
 namespace vroc::play {
@@ -23,24 +23,13 @@ constexpr double kDt = 1.0 / 60.0;
 
 /// One ball (r = 5 cm, 0.2 kg) at `at` with velocities, a real floor far below.
 Scene ballScene(const Vec3& at, const Vec3& v, const Vec3& w, const Vec3& gravity) {
-    Scene scene;
+    Scene scene = test::emptyScene(0.5, 0.5);
     scene.name = "coupling";
     scene.gravity = gravity;
-    scene.materials.push_back({"m", 0.5, 0.5});
-    Body floor;
-    floor.name = "floor";
-    floor.role = BodyRole::Real;
-    floor.shape = Shape::box(Vec3(2, 2, 0.1));
-    floor.pose.position = Vec3(0, 0, -5);
-    scene.bodies.push_back(floor);
-    Body ball;
-    ball.name = "ball";
-    ball.shape = Shape::sphere(0.05);
-    ball.pose.position = at;
-    ball.linear_velocity = v;
-    ball.angular_velocity = w;
-    ball.mass_properties = massProperties(ball.shape, 0.2);
-    scene.bodies.push_back(ball);
+    test::addBody(scene, "floor", Shape::box(Vec3(2, 2, 0.1)), test::at(Vec3(0, 0, -5)), 0, true);
+    const int ball = test::addBody(scene, "ball", Shape::sphere(0.05), test::at(at), 0, false, 0.2);
+    scene.bodies[ball].linear_velocity = v;
+    scene.bodies[ball].angular_velocity = w;
     return scene;
 }
 

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "test_backends.h"
-#include "vroc/core/mass_properties.h"
+#include "test_scene_builder.h"
 #include "vroc/play/device_source.h"
 #include "vroc/play/grab_controller.h"
 #include "vroc/plugin/plugin_host.h"
@@ -20,25 +20,13 @@ namespace {
 
 using test::registerBackendsOnce;
 
-/// Zero gravity, a real floor far below and one ball where the throw arc starts.
+/// Zero gravity, a real floor far below and one ball (r = 5 cm, 0.2 kg) where the throw arc starts.
 Scene throwScene(const Vec3& ball_at) {
-    Scene scene;
+    Scene scene = test::emptyScene(0.5, 0.5);
     scene.name = "throw";
     scene.gravity = Vec3::Zero();
-    scene.materials.push_back({"m", 0.5, 0.5});
-    Body floor;
-    floor.name = "floor";
-    floor.role = BodyRole::Real;
-    floor.shape = Shape::box(Vec3(2, 2, 0.1));
-    floor.pose.position = Vec3(0, 0, -5);
-    scene.bodies.push_back(floor);
-    Body ball;
-    ball.name = "ball";
-    ball.role = BodyRole::Virtual;
-    ball.shape = Shape::sphere(0.05);
-    ball.pose.position = ball_at;
-    ball.mass_properties = massProperties(ball.shape, 0.2);
-    scene.bodies.push_back(ball);
+    test::addBody(scene, "floor", Shape::box(Vec3(2, 2, 0.1)), test::at(Vec3(0, 0, -5)), 0, true);
+    test::addBody(scene, "ball", Shape::sphere(0.05), test::at(ball_at), 0, false, 0.2);
     return scene;
 }
 

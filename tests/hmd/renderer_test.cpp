@@ -6,27 +6,18 @@
 
 #include <gtest/gtest.h>
 
+#include "test_scene_builder.h"
 #include "vroc/hmd/lens_distortion.h"
 #include "vroc/render/stereo_renderer.h"
 
 namespace vroc::render {
 namespace {
 
-Body makeBody(const std::string& name, BodyRole role, Shape shape, const Vec3& position) {
-    Body b;
-    b.name = name;
-    b.role = role;
-    b.shape = std::move(shape);
-    b.pose.position = position;
-    return b;
-}
-
 /// A real cube (half 0.3) at the origin and one virtual sphere (r 0.1) at `sphere_at`.
 Scene boxAndSphere(const Vec3& sphere_at, bool with_box = true) {
-    Scene scene;
-    scene.materials.push_back({"m", 0.5, 0.5});
-    if (with_box) scene.bodies.push_back(makeBody("box", BodyRole::Real, Shape::box(Vec3(0.3, 0.3, 0.3)), Vec3::Zero()));
-    scene.bodies.push_back(makeBody("ball", BodyRole::Virtual, Shape::sphere(0.1), sphere_at));
+    Scene scene = test::emptyScene(0.5, 0.5);
+    if (with_box) test::addBody(scene, "box", Shape::box(Vec3(0.3, 0.3, 0.3)), test::at(Vec3::Zero()), 0, true);
+    test::addBody(scene, "ball", Shape::sphere(0.1), test::at(sphere_at), 0, false);
     return scene;
 }
 

@@ -108,6 +108,52 @@ TEST(ReplayPlugin, HoldsEndsUntrackedAndLoops) {
     EXPECT_LT((r.sample.pose.position - FigureEight().position(0.25)).norm(), 1e-15);
 }
 
+// Found by tests/fuzz/pose_csv_fuzz (docs/fuzzing.md): two samples 1.2e19 ns apart, more than an
+// int64 holds. The span and the loop length overflowed (signed overflow: undefined; in practice a
+// negative span, so the position went backwards and looping stopped).
+TEST(ReplayPlugin, RecordingSpanningMoreThanTheInt64RangeInterpolatesAndLoops) {
+    const std::string path = ::testing::TempDir() + "vroc_replay_span_" + std::to_string(getpid()) + ".csv";
+    {
+        std::ofstream out(path);
+        out << "time_ns,sensor,x,y,z,qx,qy,qz,qw,buttons\n"
+               "-8000000000000000000,0,0,0,0,0,0,0,1,0\n"
+               "4000000000000000000,0,12,0,0,0,0,0,1,0\n";
+    }
+    auto host = makeTestHost();
+    auto replay = host->open("replay", "file=" + path);
+    // Host time 0 is 8e18 ns into the 1.2e19 ns between the samples: 2/3 of the way.
+    const PoseResult r = replay->pose(0, 0);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_EQ(r.code, VROC_OK);
+    EXPECT_NEAR(r.sample.pose.position.x(), 8.0, 1e-12);
+    EXPECT_NEAR(r.sample.linear_velocity.x(), 12.0 / 1.2e10, 1e-22);   // [m/s]
+    // Looping: 5e18 is 1.3e19 after the first sample, 1e18 into the second pass (1/12 of the way).
+    auto looped = host->open("replay", "loop=1,file=" + path);
+    const PoseResult l = looped->pose(0, 5'000'000'000'000'000'000);
+    ASSERT_TRUE(l.ok()) << l.message;
+    EXPECT_EQ(l.code, VROC_OK);
+    EXPECT_NEAR(l.sample.pose.position.x(), 1.0, 1e-12);
+}
+
+// Found with tests/fuzz/pose_csv_fuzz (docs/fuzzing.md): positions of 1e308 and -1e308 m were
+// accepted, and the pose between them (and its velocity) came out infinite, for the host to reject
+// at run time. Positions are now held to +-1e6 m per coordinate when the recording is read.
+TEST(ReplayPlugin, PositionBeyondTheAcceptedRangeIsInputErrorWithLine) {
+    const std::string path = ::testing::TempDir() + "vroc_replay_far_" + std::to_string(getpid()) + ".csv";
+    {
+        std::ofstream out(path);
+        out << "time_ns,sensor,x,y,z,qx,qy,qz,qw,buttons\n0,0,1e308,0,0,0,0,0,1,0\n10,0,-1e308,0,0,0,0,0,1,0\n";
+    }
+    auto host = makeTestHost();
+    try {
+        host->open("replay", "file=" + path);
+        FAIL() << "a recording at 1e308 m opened";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(path + ":2: column x: expected a position within +-1e6 m"), std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(ReplayPlugin, MalformedRecordingIsInputErrorWithLine) {
     const std::string path = ::testing::TempDir() + "vroc_replay_bad_" + std::to_string(getpid()) + ".csv";
     {

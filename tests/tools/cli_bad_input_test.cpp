@@ -2,8 +2,6 @@
 // Bad input through the command line: exit code 2, exactly one line on stderr that starts with
 // "vroc: error: " and names the problem, and no output directory that looks complete.
 #include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
@@ -100,27 +98,19 @@ TEST_F(BadInput, UsageErrors) {
 // Failure while running: an interrupted run exits 3 and leaves no run.json (nor its directory).
 TEST_F(BadInput, InterruptedRunExitsThreeWithoutRunJson) {
     const fs::path out = dir / "long";
-    const pid_t pid = ::fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-        const std::string err = (dir / "err").string();
-        std::freopen(err.c_str(), "w", stderr);
-        std::freopen("/dev/null", "w", stdout);
-        const std::string bin = vrocBinary(), dir_arg = out.string();
-        ::execl(bin.c_str(), bin.c_str(), "run", scene_file.c_str(), "--backend", "bullet", "--duration", "1e6",
-                "--out", dir_arg.c_str(), static_cast<char*>(nullptr));
-        ::_exit(127);
-    }
+    SpawnOptions options;
+    options.stdout_file = "/dev/null";
+    options.stderr_file = dir / "err";
+    Subprocess run(vrocCommand({"run", scene_file, "--backend", "bullet", "--duration", "1e6", "--out", out.string()}),
+                   options);
     // Signal only once the run is underway (its temporary files exist, the handler is installed).
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
     while (!fs::exists(out / "trajectory.csv.tmp") && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    ::kill(pid, SIGINT);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal instead of exiting";
-    EXPECT_EQ(WEXITSTATUS(status), 3);
+    ::kill(run.pid(), SIGINT);
+    // 128 + 2 would mean SIGINT ended it instead of the run stopping and exiting.
+    EXPECT_EQ(run.wait(), 3);
     const std::string err = readText((dir / "err").string());
     EXPECT_EQ(err.rfind("vroc: error: interrupted", 0), 0u) << err;
     EXPECT_FALSE(fs::exists(out / "run.json"));

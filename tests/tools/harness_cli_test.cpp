@@ -61,8 +61,8 @@ TEST(HarnessCli, ExitCodeOneOnlyWhenNativeFailsARequiredCheck) {
     CheckOptions o;
     o.progress = false;
     o.only = {"ballistic"};
-    EXPECT_EQ(checkExitCode(runCheckSuite(selectBackends("test-exact,native", {}), o)), 1);
-    EXPECT_EQ(checkExitCode(runCheckSuite(selectBackends("test-euler", {}), o)), 0);
+    EXPECT_EQ(runCheckSuite(selectBackends("test-exact,native", {}), o).exitCode(), 1);
+    EXPECT_EQ(runCheckSuite(selectBackends("test-euler", {}), o).exitCode(), 0);
 }
 
 TEST(HarnessCli, CompareThenReportOnBullet) {

@@ -4,14 +4,12 @@
 // an interrupted command names what did not finish, and --resume finishes only that.
 #include <gtest/gtest.h>
 
-#include <fcntl.h>
 #include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <thread>
 
@@ -109,19 +107,23 @@ TEST(ParallelCli, BadEnsembleAndPoolInputIsAOneLineErrorWithExit2) {
     EXPECT_FALSE(fs::exists(dir / "none" / "metrics.json"));
 }
 
-// Starts `command` (a shell command line) in the background with output to files.
-pid_t spawnShell(const std::string& command, const fs::path& out, const fs::path& err) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-        setpgid(0, 0);
-        const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        dup2(o, 1);
-        dup2(e, 2);
-        execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
-        _exit(127);
+// A process still running when its test ends (an assertion failed) is killed with its process
+// group rather than waited for.
+struct KillIfRunning {
+    void operator()(Subprocess* p) const {
+        if (!p->poll()) ::kill(-p->pid(), SIGKILL);
+        delete p;
     }
-    return pid;
+};
+using Started = std::unique_ptr<Subprocess, KillIfRunning>;
+
+// Starts `argv` in the background, in a process group of its own, with output to files.
+Started start(const std::vector<std::string>& argv, const fs::path& out, const fs::path& err) {
+    SpawnOptions options;
+    options.stdout_file = out;
+    options.stderr_file = err;
+    options.new_process_group = true;
+    return Started(new Subprocess(argv, options));
 }
 
 int countRuns(const fs::path& runs) {
@@ -133,20 +135,14 @@ int countRuns(const fs::path& runs) {
 }
 
 // Waits until `n` runs are on disk (or the process ended); returns false on timeout.
-bool waitForRuns(pid_t pid, const fs::path& runs, int n) {
+bool waitForRuns(Subprocess& process, const fs::path& runs, int n) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while (std::chrono::steady_clock::now() < deadline) {
         if (countRuns(runs) >= n) return true;
-        if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
+        if (process.poll()) return false;
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     return false;
-}
-
-int waitExit(pid_t pid) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 std::vector<std::string> pileEnsemble(const fs::path& out) {
@@ -154,14 +150,9 @@ std::vector<std::string> pileEnsemble(const fs::path& out) {
             "--duration", "0.5", "--permutations", "199", "-o", out.string()};
 }
 
-std::string shellLine(const std::string& prefix, const std::vector<std::string>& args) {
-    std::string line = prefix;
-    for (const auto& a : args) line += " " + shellQuote(a);
-    return line;
-}
-
+// `launcher`: how the command starts, the vroc binary or mpirun with its options and the binary.
 void expectInterruptedThenResumed(const fs::path& dir, const fs::path& out, int code, const std::string& err_text,
-                                  const std::vector<std::string>& resume_prefix) {
+                                  const std::vector<std::string>& launcher) {
     EXPECT_NE(code, 0);
     EXPECT_NE(err_text.find("vroc: error: ensemble interrupted: "), std::string::npos) << err_text;
     EXPECT_NE(err_text.find("did not"), std::string::npos) << err_text;
@@ -176,9 +167,8 @@ void expectInterruptedThenResumed(const fs::path& dir, const fs::path& out, int 
     EXPECT_LT(finished, 80);
 
     const fs::path o = dir / "resume.out", e = dir / "resume.err";
-    const pid_t pid = spawnShell(shellLine(resume_prefix.empty() ? shellQuote(vrocBinary()) : resume_prefix[0],
-                                           concat(pileEnsemble(out), {"--resume", "--jobs", "2", "-q"})), o, e);
-    ASSERT_EQ(waitExit(pid), 0) << readText(e.string());
+    const auto resumed = start(concat(launcher, concat(pileEnsemble(out), {"--resume", "--jobs", "2", "-q"})), o, e);
+    ASSERT_EQ(resumed->wait(), 0) << readText(e.string());
     EXPECT_GE(execution(out)["resumed"].get<int>(), finished);
 
     const fs::path ref = dir / "reference";
@@ -191,18 +181,18 @@ TEST(ParallelCli, InterruptedEnsembleResumesToTheSameResults) {
     const fs::path dir = freshTempDir("parallel-interrupt");
     const fs::path out = dir / "ens";
     const fs::path o = dir / "run.out", e = dir / "run.err";
-    const pid_t pid = spawnShell(shellLine(shellQuote(vrocBinary()), concat(pileEnsemble(out), {"--jobs", "2", "-q"})), o, e);
-    ASSERT_TRUE(waitForRuns(pid, out / "runs", 6)) << readText(e.string());
-    kill(pid, SIGINT);   // Ctrl-C
-    const int code = waitExit(pid);
+    const auto run = start(vrocCommand(concat(pileEnsemble(out), {"--jobs", "2", "-q"})), o, e);
+    ASSERT_TRUE(waitForRuns(*run, out / "runs", 6)) << readText(e.string());
+    kill(run->pid(), SIGINT);   // Ctrl-C
+    const int code = run->wait();
     EXPECT_EQ(code, 3);   // docs/cli.md: interruption is a failure while running
-    expectInterruptedThenResumed(dir, out, code, readText(e.string()), {});
+    expectInterruptedThenResumed(dir, out, code, readText(e.string()), {vrocBinary()});
 }
 
 #ifdef VROC_TEST_MPIEXEC
-std::string mpirun(int ranks) {
+std::vector<std::string> mpirun(int ranks) {
     // As root (CI, containers) Open MPI needs its documented consent.
-    return std::string(VROC_TEST_MPIEXEC) + " --oversubscribe --allow-run-as-root -n " + std::to_string(ranks) + " " + shellQuote(vrocBinary());
+    return {VROC_TEST_MPIEXEC, "--oversubscribe", "--allow-run-as-root", "-n", std::to_string(ranks), vrocBinary()};
 }
 
 TEST(ParallelCli, MpiRanksGiveTheSameResultsAsOneProcess) {
@@ -213,14 +203,14 @@ TEST(ParallelCli, MpiRanksGiveTheSameResultsAsOneProcess) {
     ASSERT_EQ(r1.exit_code, 0) << r1.err;
     for (int ranks : {2, 3}) {
         const fs::path out = dir / ("ranks" + std::to_string(ranks));
-        const pid_t pid = spawnShell(shellLine(mpirun(ranks), concat(sweep, {"-o", out.string()})), dir / "mpi.out", dir / "mpi.err");
-        ASSERT_EQ(waitExit(pid), 0) << readText((dir / "mpi.err").string());
+        const auto mpi = start(concat(mpirun(ranks), concat(sweep, {"-o", out.string()})), dir / "mpi.out", dir / "mpi.err");
+        ASSERT_EQ(mpi->wait(), 0) << readText((dir / "mpi.err").string());
         EXPECT_EQ(results(dir / "one").dump(), results(out).dump()) << ranks << " ranks";
         EXPECT_EQ(execution(out)["ranks"], ranks);
     }
     // Commands that write one set of files refuse to run on many ranks.
-    const pid_t pid = spawnShell(shellLine(mpirun(2), {"run", staircase, "-o", (dir / "run").string()}), dir / "run.out", dir / "run.err");
-    EXPECT_EQ(waitExit(pid), 2);
+    const auto run = start(concat(mpirun(2), {"run", staircase, "-o", (dir / "run").string()}), dir / "run.out", dir / "run.err");
+    EXPECT_EQ(run->wait(), 2);
     EXPECT_NE(readText((dir / "run.err").string()).find("does not run under mpirun"), std::string::npos);
 }
 
@@ -241,12 +231,12 @@ TEST(ParallelCli, AKilledRankEndsTheJobNamingTheMissingRunsAndResumeFinishesIt) 
     const fs::path dir = freshTempDir("parallel-mpi-kill");
     const fs::path out = dir / "ens";
     const fs::path o = dir / "run.out", e = dir / "run.err";
-    const pid_t pid = spawnShell(shellLine(mpirun(2), concat(pileEnsemble(out), {"-q"})), o, e);
-    ASSERT_TRUE(waitForRuns(pid, out / "runs", 6)) << readText(e.string());
+    const auto run = start(concat(mpirun(2), concat(pileEnsemble(out), {"-q"})), o, e);
+    ASSERT_TRUE(waitForRuns(*run, out / "runs", 6)) << readText(e.string());
     const pid_t rank1 = findRank(1, out);
     ASSERT_GT(rank1, 0);
     kill(rank1, SIGKILL);   // a lost node
-    const int code = waitExit(pid);   // must end, not hang (the test's own timeout would catch a hang)
+    const int code = run->wait();   // must end, not hang (the test's own timeout would catch a hang)
     expectInterruptedThenResumed(dir, out, code, readText(e.string()), {mpirun(2)});
 }
 #endif

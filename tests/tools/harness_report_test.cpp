@@ -14,7 +14,9 @@
 #include "test_scenes.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/mass_properties.h"
+#include "vroc/core/subprocess.h"
 #include "vroc/harness/compare.h"
+#include "vroc/harness/compare_document.h"
 #include "vroc/harness/html_report.h"
 #include "vroc/harness/report_merge.h"
 
@@ -83,7 +85,7 @@ Json compareDocument() {
     o.progress = false;
     o.write_csv = false;
     o.windows = 4;
-    return compareScene(s, selectBackends("test-exact,test-euler", {}), o, {});
+    return compareDocument(compareScene(s, selectBackends("test-exact,test-euler", {}), o, {}), "vroc compare");
 }
 
 // Every chart in the document: the data file gnuplot read has the same series, point counts and
@@ -154,17 +156,26 @@ double pngContrast(const fs::path& path, int& width, int& height) {
 }
 
 TEST(HarnessReport, RendersInHeadlessChromium) {
-    if (std::system("command -v chromium >/dev/null 2>&1") != 0) GTEST_SKIP() << "chromium not installed (make deps)";
     const fs::path dir = test::freshTempDir("harness-chromium");
+    SpawnOptions quiet;
+    quiet.stdout_file = quiet.stderr_file = dir / "chromium-version.log";
+    try {
+        runProcess({"chromium", "--version"}, quiet);
+    } catch (const RunError&) {
+        GTEST_SKIP() << "chromium not installed (make deps)";
+    }
     const Json doc = compareDocument();
     const fs::path report = writeReport({doc}, dir);
     const fs::path shot = dir / "shot.png", profile = dir / "profile";
-    const std::string command = "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
-                                "--disable-component-update --disable-sync --no-first-run --hide-scrollbars --user-data-dir=" +
-                                test::shellQuote(profile.string()) + " --window-size=1100,2400 --screenshot=" +
-                                test::shellQuote(shot.string()) + " " + test::shellQuote("file://" + fs::absolute(report).string()) +
-                                " >" + test::shellQuote((dir / "chromium.log").string()) + " 2>&1";
-    ASSERT_EQ(std::system(command.c_str()), 0) << slurp(dir / "chromium.log");
+    SpawnOptions logged;
+    logged.stdout_file = logged.stderr_file = dir / "chromium.log";
+    const int status = runProcess({"timeout", "120", "chromium", "--headless", "--no-sandbox", "--disable-gpu",
+                                   "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                                   "--no-first-run", "--hide-scrollbars", "--user-data-dir=" + profile.string(),
+                                   "--window-size=1100,2400", "--screenshot=" + shot.string(),
+                                   "file://" + fs::absolute(report).string()},
+                                  logged);
+    ASSERT_EQ(status, 0) << slurp(dir / "chromium.log");
     ASSERT_TRUE(fs::exists(shot)) << slurp(dir / "chromium.log");
     int w = 0, h = 0;
     const double contrast = pngContrast(shot, w, h);

@@ -4,27 +4,18 @@
 
 #include <cmath>
 
-#include "vroc/core/mass_properties.h"
+#include "test_scene_builder.h"
 #include "vroc/harness/robustness.h"
 
 namespace vroc::harness {
 namespace {
 
-// Ground (top face z = 0) and a 0.2 m box resting on it.
+// Ground (top face z = 0) and a 0.2 m box (1 kg) resting on it; g = 10 m/s^2.
 Scene restingBox() {
-    Scene s;
-    s.gravity = Vec3(0, 0, -10);
-    s.materials.push_back({"m", 0, 0.5});
-    Body ground;
-    ground.role = BodyRole::Real;
-    ground.shape = Shape::box(Vec3(5, 5, 0.5));
-    ground.pose.position = Vec3(0, 0, -0.5);
-    s.bodies.push_back(ground);
-    Body box;
-    box.shape = Shape::box(Vec3::Constant(0.1));
-    box.mass_properties = massProperties(box.shape, 1.0);
-    box.pose.position = Vec3(0, 0, 0.1);
-    s.bodies.push_back(box);
+    Scene s = test::bareScene(1e-3, Vec3(0, 0, -10));
+    test::addMaterial(s, "m", 0, 0.5);
+    test::addBody(s, "ground", Shape::box(Vec3(5, 5, 0.5)), test::at(Vec3(0, 0, -0.5)), 0, true);
+    test::addBody(s, "box", Shape::box(Vec3::Constant(0.1)), test::at(Vec3(0, 0, 0.1)), 0, false, 1.0);
     return s;
 }
 

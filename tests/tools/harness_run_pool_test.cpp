@@ -56,7 +56,7 @@ TEST(RunPool, ForkedWorkersGiveTheSameBitsInJobOrder) {
         EXPECT_EQ(b[i]["tiny"].get<double>(), 4.9e-324 * (i + 1));
         EXPECT_TRUE(fs::exists(dir / "b" / "runs" / ("job-" + std::to_string(i) + ".json")));
     }
-    EXPECT_EQ(forked.executionJson()["runs"], 10);
+    EXPECT_EQ(forked.execution().runs, 10);
 }
 
 TEST(RunPool, AFailedOrCrashedRunIsNamedAndTheOthersAreKept) {
@@ -104,7 +104,7 @@ TEST(RunPool, ResumeRunsOnlyWhatIsMissing) {
         EXPECT_EQ(first[i].dump(), second[i].dump());
         EXPECT_EQ(fs::exists(marks / ("ran-" + std::to_string(i))), i == 2 || i == 5) << i;
     }
-    EXPECT_EQ(again.executionJson()["resumed"], 4);
+    EXPECT_EQ(again.execution().resumed, 4);
     std::ifstream status(dir / "runs" / "status.json");
     const Json s = Json::parse(status);
     EXPECT_TRUE(s["complete"].get<bool>());

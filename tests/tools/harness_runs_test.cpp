@@ -3,12 +3,15 @@
 // closed form: exact flight and semi-implicit Euler (x_euler - x_exact = g dt t / 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "harness_test_backends.h"
 #include "vroc/core/mass_properties.h"
 #include "vroc/harness/check.h"
+#include "vroc/harness/check_document.h"
 #include "vroc/harness/compare.h"
+#include "vroc/harness/compare_document.h"
 #include "vroc/harness/run_trace.h"
 
 namespace vroc::harness {
@@ -71,25 +74,37 @@ TEST(HarnessCompare, DivergenceWindowsAndTwinsMatchTheClosedForm) {
     o.windows = 5;
     o.progress = false;
     o.write_csv = false;
-    const Json doc = compareScene(flightScene(), b, o, {});
-    const Json& pair = doc["results"]["pairs"][0];
+    const CompareResult c = compareScene(flightScene(), b, o, {});
+    ASSERT_EQ(c.pairs.size(), 1u);
+    const ComparePair& pair = c.pairs[0];
+    const CompareBackendSummary& exact = c.summaries[0];
+    const CompareBackendSummary& euler = c.summaries[1];
     const double dt = 0.01, g = 10;
     // |x_euler - x_exact| = g dt t / 2: largest at t = 2 s.
-    EXPECT_NEAR(pair["max_divergence_m"].get<double>(), 0.5 * g * dt * 2.0, 1e-9);
-    EXPECT_NEAR(pair["final_divergence_m"].get<double>(), 0.5 * g * dt * 2.0, 1e-9);
+    EXPECT_NEAR(*std::max_element(pair.divergence.distance.begin(), pair.divergence.distance.end()), 0.5 * g * dt * 2.0, 1e-9);
+    EXPECT_NEAR(pair.divergence.distance.back(), 0.5 * g * dt * 2.0, 1e-9);
     // Twins of linear integrators stay 1e-9 apart: no horizon; divergence above the floor from frame 1.
-    EXPECT_TRUE(doc["results"]["test-exact"]["twin"]["horizon_s"].is_null());
-    EXPECT_NEAR(doc["results"]["test-exact"]["twin"]["final_spread_m"].get<double>(), 1e-9, 1e-12);
-    EXPECT_NEAR(pair["first_significant_s"].get<double>(), dt, 1e-12);
+    EXPECT_FALSE(exact.horizon.has_value());
+    EXPECT_NEAR(exact.twin_spread.distance.back(), 1e-9, 1e-12);
+    ASSERT_TRUE(pair.significance.first_time.has_value());
+    EXPECT_NEAR(*pair.significance.first_time, dt, 1e-12);
     // A window restarted from the exact state: Euler is off by g dt W / 2 after W; exact by ~0.
-    for (const Json& e : doc["results"]["test-euler"]["windows"]["position_error_m"]) EXPECT_NEAR(e.get<double>(), 0.5 * g * dt * 0.25, 1e-9);
-    for (const Json& e : doc["results"]["test-exact"]["windows"]["position_error_m"]) EXPECT_LT(e.get<double>(), 1e-9);
-    // Energy: exact flight conserves it; Euler gains m g (g dt t / 2)... measured against hand value.
-    EXPECT_LT(doc["results"]["test-exact"]["invariants"]["energy_max_abs_change_J"].get<double>(), 1e-9);
+    ASSERT_EQ(euler.window_position_error.size(), 5u);
+    for (double e : euler.window_position_error) EXPECT_NEAR(e, 0.5 * g * dt * 0.25, 1e-9);
+    for (double e : exact.window_position_error) EXPECT_LT(e, 1e-9);
+    // Energy: exact flight conserves it.
+    EXPECT_LT(exact.invariants.energy_max_abs_change, 1e-9);
+    EXPECT_FALSE(exact.events.first_contact.has_value());
+    EXPECT_EQ(exact.penetration_max, 0.0);
+    EXPECT_TRUE(c.runs[1].deterministic);
+    EXPECT_EQ(c.runs[1].state_hash.size(), 16u);
+    // The document is written from the same result, under the documented keys.
+    const Json doc = compareDocument(c, "vroc compare");
+    EXPECT_NEAR(doc["results"]["pairs"][0]["max_divergence_m"].get<double>(), 0.5 * g * dt * 2.0, 1e-9);
+    EXPECT_TRUE(doc["results"]["test-exact"]["twin"]["horizon_s"].is_null());
     EXPECT_EQ(doc["results"]["test-exact"]["events"]["first_contact_s"], nullptr);
-    EXPECT_EQ(doc["results"]["test-exact"]["penetration"]["max_m"].get<double>(), 0.0);
-    EXPECT_TRUE(doc["results"]["test-euler"]["deterministic"].get<bool>());
-    EXPECT_EQ(doc["results"]["test-euler"]["state_hash"].get<std::string>().size(), 16u);
+    EXPECT_EQ(doc["results"]["test-euler"]["windows"]["position_error_m"].size(), 5u);
+    EXPECT_EQ(doc["results"]["test-euler"]["state_hash"], c.runs[1].state_hash);
 }
 
 TEST(HarnessCheck, ExactFlightPassesBallisticAndEulerFailsItByTheHandValue) {
@@ -97,24 +112,31 @@ TEST(HarnessCheck, ExactFlightPassesBallisticAndEulerFailsItByTheHandValue) {
     CheckOptions o;
     o.progress = false;
     o.only = {"ballistic", "tumble"};
-    const Json doc = runCheckSuite(b, o);
+    const CheckSuiteResult result = runCheckSuite(b, o);
     bool seen = false;
-    for (const Json& c : doc["results"]["checks"]) {
-        if (c["id"] == "ballistic.position") {
+    for (const CheckRow& row : result.rows) {
+        if (row.metric.id == "ballistic.position") {
             seen = true;
-            EXPECT_TRUE(c["results"]["test-exact"]["pass"].get<bool>()) << c.dump();
+            EXPECT_EQ(row.cells[0].pass, true);
             // Euler at 1/240 s over 2 s: g dt t / 2 = 9.81 / 240 = 0.040875 m.
-            EXPECT_NEAR(c["results"]["test-euler"]["measured"].get<double>(), 9.81 / 240, 1e-9);
-            EXPECT_FALSE(c["results"]["test-euler"]["pass"].get<bool>());
+            EXPECT_NEAR(row.cells[1].measured, 9.81 / 240, 1e-9);
+            EXPECT_EQ(row.cells[1].pass, false);
         }
-        if (c["id"] == "tumble.angular-momentum") {
+        if (row.metric.id == "tumble.angular-momentum") {
             // These backends keep ω constant in the world: no gyroscopic term, so L drifts; the check must see it.
-            EXPECT_FALSE(c["results"]["test-exact"]["pass"].get<bool>()) << c.dump();
+            EXPECT_EQ(row.cells[0].pass, false) << row.cells[0].measured;
         }
     }
     EXPECT_TRUE(seen);
-    EXPECT_EQ(checkExitCode(doc), 0);   // no backend named native
-    EXPECT_NE(checkTableText(doc).find("ballistic.position"), std::string::npos);
+    EXPECT_EQ(result.exitCode(), 0);   // no backend named native
+    EXPECT_NE(checkTableText(result).find("ballistic.position"), std::string::npos);
+    // The document is written from the same result: the cells by backend name.
+    const Json doc = checkDocument(result, "vroc check");
+    ASSERT_EQ(doc["results"]["checks"].size(), result.rows.size());
+    const Json& first = doc["results"]["checks"][0];
+    EXPECT_EQ(first["id"], result.rows[0].metric.id);
+    EXPECT_EQ(first["results"]["test-euler"]["measured"].get<double>(), result.rows[0].cells[1].measured);
+    EXPECT_EQ(first["results"]["test-exact"]["support"], "exact");
 }
 
 }  // namespace

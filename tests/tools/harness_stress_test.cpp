@@ -10,6 +10,7 @@
 #include "harness_test_backends.h"
 #include "vroc/core/errors.h"
 #include "vroc/harness/check.h"
+#include "vroc/harness/check_document.h"
 #include "vroc/harness/check_suite.h"
 
 namespace vroc::harness {
@@ -137,20 +138,21 @@ TEST(HarnessStress, PlankRunsAfterTheAnalyticRowsWithTheFreeFallSpeed) {
     o.stress = true;
     o.scenes_dir = kScenes;
     o.only = {"ballistic", "stress-plank"};
-    const Json doc = runCheckSuite(selectBackends("test-exact", {}), o);
-    const Json& checks = doc["results"]["checks"];
+    const CheckSuiteResult result = runCheckSuite(selectBackends("test-exact", {}), o);
+    const std::vector<CheckRow>& checks = result.rows;
     ASSERT_EQ(checks.size(), 4u);   // ballistic x2, then plank penetration and speed
-    EXPECT_EQ(checks[0]["scenario"], "ballistic");
-    EXPECT_EQ(checks[3]["id"], "stress-plank.max-speed-last-1s");
+    EXPECT_EQ(checks[0].scenario, "ballistic");
+    EXPECT_EQ(checks[3].metric.id, "stress-plank.max-speed-last-1s");
     // No contact in this backend: plank and box fall from rest for 5 s; largest speed g t = 49.05 m/s.
-    EXPECT_NEAR(checks[3]["results"]["test-exact"]["measured"].get<double>(), 9.81 * 5, 1e-9);
-    EXPECT_FALSE(checks[3]["results"]["test-exact"]["pass"].get<bool>());
-    EXPECT_TRUE(doc["parameters"]["stress"].get<bool>());
-    EXPECT_NE(checkTableText(doc).find("stress-plank.penetration"), std::string::npos);
+    EXPECT_NEAR(checks[3].cells[0].measured, 9.81 * 5, 1e-9);
+    EXPECT_EQ(checks[3].cells[0].pass, false);
+    EXPECT_TRUE(result.stress);
+    EXPECT_TRUE(checkDocument(result, "")["parameters"]["stress"].get<bool>());
+    EXPECT_NE(checkTableText(result).find("stress-plank.penetration"), std::string::npos);
     // A stress id in --only turns the section on by itself; an unknown one is an input error.
     o.stress = false;
     o.only = {"stress-plank"};
-    EXPECT_EQ(runCheckSuite(selectBackends("test-exact", {}), o)["results"]["checks"].size(), 2u);
+    EXPECT_EQ(runCheckSuite(selectBackends("test-exact", {}), o).rows.size(), 2u);
     o.only = {"stress-nope"};
     EXPECT_THROW(runCheckSuite(selectBackends("test-exact", {}), o), InputError);
 }
@@ -161,14 +163,18 @@ TEST(HarnessStress, UnjudgedMetricPrintsInfoAndNullTolerance) {
     o.progress = false;
     o.scenes_dir = kScenes;
     o.only = {"stress-bin_spheres100"};
-    const Json doc = runCheckSuite(selectBackends("test-exact", {}), o);
-    const Json& speed = doc["results"]["checks"][1];
-    ASSERT_EQ(speed["id"], "stress-bin_spheres100.final-max-speed");
-    EXPECT_TRUE(speed["tolerance"].is_null());
-    EXPECT_TRUE(speed["results"]["test-exact"]["pass"].is_null());
+    const CheckSuiteResult result = runCheckSuite(selectBackends("test-exact", {}), o);
+    const CheckRow& speed = result.rows[1];
+    ASSERT_EQ(speed.metric.id, "stress-bin_spheres100.final-max-speed");
+    EXPECT_FALSE(speed.metric.judged());
+    EXPECT_FALSE(speed.cells[0].pass.has_value());
+    // In the document: a null tolerance and a null pass.
+    const Json doc = checkDocument(result, "");
+    EXPECT_TRUE(doc["results"]["checks"][1]["tolerance"].is_null());
+    EXPECT_TRUE(doc["results"]["checks"][1]["results"]["test-exact"]["pass"].is_null());
     // Spheres dropped from rest fall freely for 3 s in this backend: g t at the end.
-    EXPECT_NEAR(speed["results"]["test-exact"]["measured"].get<double>(), 9.81 * 3, 1e-9);
-    const std::string table = checkTableText(doc);
+    EXPECT_NEAR(speed.cells[0].measured, 9.81 * 3, 1e-9);
+    const std::string table = checkTableText(result);
     EXPECT_NE(table.find("info"), std::string::npos) << table;
 }
 

@@ -14,10 +14,11 @@
 #include "command.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
+#include "vroc/core/recording/output_dir.h"
 #include "vroc/harness/check.h"
+#include "vroc/harness/check_document.h"
 #include "vroc/harness/check_suite.h"
 #include "vroc/harness/mpi_world.h"
-#include "vroc/harness/output_dir.h"
 
 namespace vroc::cli {
 namespace {
@@ -65,18 +66,19 @@ int check(CheckArgs& a, const Context& context) {
     const bool stress = a.options.stress || std::any_of(a.options.only.begin(), a.options.only.end(), harness::isStressScenarioId);
     if (stress) a.options.scenes_dir = stressScenesDir(a.scenes_dir);
     const std::string set = std::string(a.options.long_set ? "long" : "default") + (stress ? "-stress" : "");
-    const auto out = a.out_dir.empty() ? harness::defaultOutputDir("check", set) : std::filesystem::path(a.out_dir);
+    const auto out = a.out_dir.empty() ? recording::timestampedOutputDir({"check", set}) : std::filesystem::path(a.out_dir);
+    harness::CheckSuiteResult result;
     const PooledResult r = runPooled(a.pool, out, !a.out_dir.empty(), harness::checkPlan(backends, a.options), "check",
-                                     !a.quiet && context.stderr_is_terminal,
-                                     [&](harness::RunPool& pool) { return harness::runCheckSuite(backends, a.options, pool); });
-    const harness::Json& doc = r.doc;
-    if (!harness::mpi::isRoot()) return harness::checkExitCode(doc);   // rank 0 prints
-    std::fputs(harness::checkTableText(doc).c_str(), stdout);
+                                     !a.quiet && context.stderr_is_terminal, [&](harness::RunPool& pool) {
+                                         result = harness::runCheckSuite(backends, a.options, pool);
+                                         return harness::checkDocument(result, a.options.command_line);
+                                     });
+    const int code = result.exitCode();
+    if (!harness::mpi::isRoot()) return code;   // rank 0 prints
+    std::fputs(harness::checkTableText(result).c_str(), stdout);
     std::printf("vroc check: report %s\n", r.report.string().c_str());
-    const int code = harness::checkExitCode(doc);
     if (code != 0)
-        std::fprintf(stderr, "vroc check: %d check(s) required for native failed on native\n",
-                     doc["results"]["required_failures_native"].get<int>());
+        std::fprintf(stderr, "vroc check: %d check(s) required for native failed on native\n", result.required_failures_native);
     return code;
 }
 

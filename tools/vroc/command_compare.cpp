@@ -12,9 +12,10 @@
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
+#include "vroc/core/recording/output_dir.h"
 #include "vroc/harness/compare.h"
+#include "vroc/harness/compare_document.h"
 #include "vroc/harness/mpi_world.h"
-#include "vroc/harness/output_dir.h"
 
 namespace vroc::cli {
 namespace {
@@ -39,10 +40,12 @@ int compare(CompareArgs& a, const Context& context) {
     a.options.frame_dt = a.dt;
     a.options.progress = !a.quiet;
     a.options.command_line = context.command_line;
-    const auto out = a.out_dir.empty() ? harness::defaultOutputDir("compare", scene.name) : std::filesystem::path(a.out_dir);
+    const auto out = a.out_dir.empty() ? recording::timestampedOutputDir({"compare", scene.name}) : std::filesystem::path(a.out_dir);
     const PooledResult r = runPooled(a.pool, out, !a.out_dir.empty(), harness::comparePlan(scene, backends, a.options), "compare",
-                                     !a.quiet && context.stderr_is_terminal,
-                                     [&](harness::RunPool& pool) { return harness::compareScene(scene, backends, a.options, out, pool); });
+                                     !a.quiet && context.stderr_is_terminal, [&](harness::RunPool& pool) {
+                                         return harness::compareDocument(harness::compareScene(scene, backends, a.options, out, pool),
+                                                                         a.options.command_line);
+                                     });
     if (!harness::mpi::isRoot()) return 0;
     std::printf("vroc compare: report %s\n", r.report.string().c_str());
     return 0;

@@ -13,9 +13,10 @@
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
+#include "vroc/core/recording/output_dir.h"
 #include "vroc/harness/ensemble.h"
+#include "vroc/harness/ensemble_document.h"
 #include "vroc/harness/mpi_world.h"
-#include "vroc/harness/output_dir.h"
 
 namespace vroc::cli {
 namespace {
@@ -46,13 +47,15 @@ int ensemble(EnsembleArgs& a, const Context& context) {
     a.options.source = a.scene;
     a.options.command_line = context.command_line;
     const Scene scene = loadScene(a.scene);
-    const auto out = a.out_dir.empty() ? harness::defaultOutputDir("ensemble", scene.name) : std::filesystem::path(a.out_dir);
+    const auto out = a.out_dir.empty() ? recording::timestampedOutputDir({"ensemble", scene.name}) : std::filesystem::path(a.out_dir);
+    harness::EnsembleResult result;
     const PooledResult r = runPooled(a.pool, out, !a.out_dir.empty(), harness::ensemblePlan(scene, backends, a.options), "ensemble",
-                                     !a.quiet && context.stderr_is_terminal,
-                                     [&](harness::RunPool& pool) { return harness::runEnsemble(scene, backends, a.options, pool); });
+                                     !a.quiet && context.stderr_is_terminal, [&](harness::RunPool& pool) {
+                                         result = harness::runEnsemble(scene, backends, a.options, pool);
+                                         return harness::ensembleDocument(result);
+                                     });
     if (!harness::mpi::isRoot()) return 0;
-    const harness::Json& doc = r.doc;
-    std::fputs(harness::ensembleVerdictText(doc).c_str(), stdout);
+    std::fputs(harness::ensembleVerdictText(result).c_str(), stdout);
     std::printf("vroc ensemble: report %s\n", r.report.string().c_str());
     return 0;
 }

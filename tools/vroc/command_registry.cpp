@@ -1,6 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "command.h"
 
+// `vroc play` needs the renderer, which a build may leave out (CMake option VROC_BUILD_RENDERER).
+#ifdef VROC_WITH_RENDERER
+#define VROC_RENDERER_COMMANDS(X) X(Play)
+#else
+#define VROC_RENDERER_COMMANDS(X)
+#endif
+
 // To add a command: write command_<name>.cpp defining `vroc::cli::Command make<Name>Command()`
 // and add one line X(<Name>) to this list.
 #define VROC_COMMAND_LIST(X) \
@@ -8,7 +15,7 @@
     X(Run)                   \
     X(Compare) X(Check) X(Sweep) X(Ensemble) X(Report) \
     X(Plugins)               \
-    X(Play)
+    VROC_RENDERER_COMMANDS(X)
 
 namespace vroc::cli {
 

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `vroc run SCENE --backend NAME`: simulate one scene on one backend and record it (docs/cli.md).
-#include <cctype>
 #include <csignal>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -18,6 +16,7 @@
 #include "vroc/audio/sound_recorder.h"
 #include "vroc/core/backend_registry.h"
 #include "vroc/core/errors.h"
+#include "vroc/core/recording/output_dir.h"
 #include "vroc/core/recording/run_recorder.h"
 #include "vroc/core/scene_loader.h"
 #include "vroc/play/tracked_driver.h"
@@ -60,26 +59,6 @@ double positiveSeconds(const std::optional<double>& value, double fallback, cons
     return *value;
 }
 
-// Keeps directory names portable: letters, digits, '.', '_' and '-'.
-std::string pathWord(const std::string& text) {
-    std::string out;
-    for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') ? c : '_';
-    return out.empty() ? "scene" : out;
-}
-
-// runs/<scene>-<backend>-<YYYYmmdd-HHMMSS UTC>, with -2, -3, ... when that name is taken.
-fs::path defaultOutDir(const Scene& scene, const std::string& backend) {
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char stamp[32];
-    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &utc);
-    const std::string stem = "runs/" + pathWord(scene.name) + "-" + pathWord(backend) + "-" + stamp;
-    fs::path dir = stem;
-    for (int n = 2; fs::exists(dir); ++n) dir = stem + "-" + std::to_string(n);
-    return dir;
-}
-
 void printSummary(const recording::RunRecord& r, const fs::path& dir) {
     std::printf("vroc: %s on %s: %lld steps of %.6g s in %.3f s wall, step p50 %.1f us, p99 %.1f us, "
                 "%llu collisions, state_hash %s\n",
@@ -112,8 +91,9 @@ int run(const RunOptions& options, const Context& context) {
     request.scene_file = options.scene_file;
     request.frame_dt = positiveSeconds(options.dt, scene.frame_dt, "--dt");
     request.duration = duration;
-    recording::frameCount(request.duration, request.frame_dt);   // range check before touching disk
-    request.out_dir = options.out_dir.empty() ? defaultOutDir(scene, backend.name) : fs::path(options.out_dir);
+    frameCount(request.duration, request.frame_dt);   // range check before touching disk
+    request.out_dir = options.out_dir.empty() ? recording::timestampedOutputDir({scene.name, backend.name})
+                                              : fs::path(options.out_dir);
     request.command_line = context.command_line;
 
     // --track: those tracked bodies follow their devices, read at simulation time before each frame.
@@ -133,7 +113,7 @@ int run(const RunOptions& options, const Context& context) {
     if (!options.sound.empty()) {
         audio::SoundSettings settings;
         settings.level = audio::parseOutputLevel(options.sound_level, "--sound-level");
-        const double end = static_cast<double>(recording::frameCount(request.duration, request.frame_dt)) *
+        const double end = static_cast<double>(frameCount(request.duration, request.frame_dt)) *
                            request.frame_dt;
         sound.emplace(scene, request.frame_dt, end, options.sound, settings);
         request.on_events = [&sound](const std::vector<CollisionEvent>& events) { sound->addEvents(events); };

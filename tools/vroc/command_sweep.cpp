@@ -12,9 +12,10 @@
 #include "frame_steps.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
+#include "vroc/core/recording/output_dir.h"
 #include "vroc/harness/mpi_world.h"
-#include "vroc/harness/output_dir.h"
 #include "vroc/harness/sweep.h"
+#include "vroc/harness/sweep_document.h"
 #include "vroc/harness/sweep_curves.h"
 
 namespace vroc::cli {
@@ -46,15 +47,20 @@ int sweep(SweepArgs& a, const Context& context) {
     a.options.command_line = context.command_line;
     harness::sweepCurves(backends, a.options.vary);   // bad --vary fails before any file is written
     const harness::SweepScene scene = harness::loadSweepScene(a.scene);
-    const auto out = a.out_dir.empty() ? harness::defaultOutputDir("sweep", scene.scene.name) : std::filesystem::path(a.out_dir);
+    const auto out = a.out_dir.empty() ? recording::timestampedOutputDir({"sweep", scene.scene.name}) : std::filesystem::path(a.out_dir);
+    harness::SweepResult result;
     const PooledResult r = runPooled(a.pool, out, !a.out_dir.empty(), harness::sweepPlan(scene, backends, a.options), "sweep",
-                                     !a.quiet && context.stderr_is_terminal,
-                                     [&](harness::RunPool& pool) { return harness::runSweep(scene, backends, a.options, pool); });
+                                     !a.quiet && context.stderr_is_terminal, [&](harness::RunPool& pool) {
+                                         result = harness::runSweep(scene, backends, a.options, pool);
+                                         return harness::sweepDocument(result, a.options.command_line);
+                                     });
     if (!harness::mpi::isRoot()) return 0;
-    const harness::Json& doc = r.doc;
-    for (const auto& p : doc["results"]["pareto_front"])
-        std::printf("vroc sweep: Pareto front: %s dt %.6g s, cost %.4g s/s, error %.3g m\n", p["series"].get<std::string>().c_str(),
-                    p["dt_s"].get<double>(), p["cost_wall_per_sim_s"].get<double>(), p["window_error_m"].get<double>());
+    for (const harness::SweepPoint& p : result.points) {
+        if (!p.on_pareto_front) continue;
+        const harness::SweepStep& s = result.stepOf(p);
+        std::printf("vroc sweep: Pareto front: %s dt %.6g s, cost %.4g s/s, error %.3g m\n", result.curves[p.curve].curve.label.c_str(),
+                    s.dt, s.cost, s.window_error);
+    }
     std::printf("vroc sweep: report %s\n", r.report.string().c_str());
     return 0;
 }

@@ -10,6 +10,7 @@
 #include "bullet_convert.h"
 #include "material_combine.h"
 #include "principal_frame.h"
+#include "vroc/core/body_motion_checks.h"
 #include "vroc/core/errors.h"
 
 namespace vroc::bullet {
@@ -28,9 +29,7 @@ void validate(const Scene& scene) {
         if (body.material < 0 || static_cast<std::size_t>(body.material) >= scene.materials.size())
             throw InputError("scene '" + scene.name + "': body '" + body.name + "': material index " +
                              std::to_string(body.material) + " out of range");
-        if (body.isTracked() && !(body.pose.position.allFinite() && body.pose.orientation.coeffs().allFinite() &&
-                                  body.pose.orientation.norm() > 0.0 && body.linear_velocity.allFinite() &&
-                                  body.angular_velocity.allFinite()))
+        if (body.isTracked() && !hasFiniteMotion(body))
             throw InputError("scene '" + scene.name + "': body '" + body.name +
                              "': a tracked body needs a finite pose (non-zero quaternion) and finite velocities");
         if (!body.isDynamic()) continue;

@@ -8,6 +8,7 @@
 #include "contact_materials.h"
 #include "mjcf_writer.h"
 #include "principal_frame.h"
+#include "vroc/core/body_motion_checks.h"
 #include "vroc/core/errors.h"
 
 namespace vroc::mujoco {
@@ -45,9 +46,7 @@ void validate(const Scene& scene, const MujocoConfig& config) {
         }
         if (body.isStatic()) continue;
         if (body.isTracked()) {   // infinite mass: no mass properties; its motion must be finite
-            if (!body.linear_velocity.allFinite() || !body.angular_velocity.allFinite() ||
-                !body.pose.position.allFinite() || !body.pose.orientation.coeffs().allFinite() ||
-                !(body.pose.orientation.norm() > 0.0))
+            if (!hasFiniteMotion(body))
                 throw InputError(where + "body '" + body.name +
                                  "': a tracked body needs a finite pose (non-zero quaternion) and finite velocities");
             continue;

@@ -2,12 +2,12 @@
 #include "vroc/audio/sound_recorder.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "vroc/audio/wav_file.h"
+#include "vroc/core/csv.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/atomic_output.h"
 
@@ -22,24 +22,6 @@ std::vector<ModalModel> materialModels(const Scene& scene) {
     std::vector<ModalModel> models;
     for (const Material& m : scene.materials) models.emplace_back(m.sound, m.name);
     return models;
-}
-
-// printf("%.17g") without locale: reads back as the same double.
-void appendNumber(std::string& out, double value) {
-    char buf[32];
-    auto result = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::general, 17);
-    out.append(buf, result.ptr);
-}
-
-// RFC 4180: quoted only when it holds a comma, quote or line break.
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"') out += '"';
-        out += c;
-    }
-    return out + '"';
 }
 
 SoundSettings checked(const SoundSettings& settings) {
@@ -108,23 +90,24 @@ SoundSummary SoundRecorder::finish(double end_time) {
 
     std::string text = "t,body_a,body_b,impulse,threshold,sample,status\n";
     for (const Row& row : rows_) {
-        appendNumber(text, row.event.time);
-        text += ',' + csvField(scene_.bodies[static_cast<std::size_t>(row.event.body_a)].name) + ',' +
-                csvField(scene_.bodies[static_cast<std::size_t>(row.event.body_b)].name) + ',';
-        appendNumber(text, row.event.impulse);
+        csv::appendNumber(text, row.event.time);
+        text += ',' + csv::field(scene_.bodies[static_cast<std::size_t>(row.event.body_a)].name) + ',' +
+                csv::field(scene_.bodies[static_cast<std::size_t>(row.event.body_b)].name) + ',';
+        csv::appendNumber(text, row.event.impulse);
         text += ',';
-        appendNumber(text, row.threshold);
-        text += ',' + std::to_string(synth_.onsetSample(std::max(0.0, row.event.time))) + ',' +
-                impactStatusName(row.status) + '\n';
+        csv::appendNumber(text, row.threshold);
+        text += ',';
+        csv::appendInteger(text, synth_.onsetSample(std::max(0.0, row.event.time)));
+        text += ',' + std::string(impactStatusName(row.status)) + '\n';
         if (row.status == ImpactStatus::Sounded) ++summary.sounded;
         if (row.status == ImpactStatus::Quiet) ++summary.quiet;
         if (row.status == ImpactStatus::Refractory) ++summary.refractory;
     }
     // The CSV is renamed into place only once the WAV is: a failed WAV leaves neither.
-    recording::AtomicFile csv(summary.events_csv);
-    csv.write(text);
+    recording::AtomicFile events_file(summary.events_csv);
+    events_file.write(text);
     writeWav(wav_path_, samples, settings_.sample_rate);
-    csv.commit();
+    events_file.commit();
     return summary;
 }
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::analytic {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -107,4 +107,4 @@ MotionState evaluateMotion(const MotionParams& p, double t) {
     return {p.center, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
 }
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::analytic

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::analytic {
 
 struct MotionState {
     Eigen::Vector3d position;          ///< [m] base frame
@@ -46,4 +46,4 @@ MotionState evaluateMotion(const MotionParams& params, double t);
 /// release; then a constant deceleration to rest. Release time [s] within a cycle:
 double throwReleaseTime(const MotionParams& params);
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::analytic

@@ -10,7 +10,9 @@
 #include "plugin_sdk.h"
 #include "pose_math.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::analytic {
+using namespace plugin_sdk;
+
 namespace {
 
 constexpr const char* kHelp =
@@ -136,6 +138,6 @@ const PluginDefinition kDefinition = {
     describe, create};
 
 }  // namespace
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::analytic
 
-VROC_DEFINE_PLUGIN(vroc::plugin_sdk::kDefinition)
+VROC_DEFINE_PLUGIN(vroc::plugins::analytic::kDefinition)

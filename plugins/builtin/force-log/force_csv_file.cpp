@@ -5,8 +5,9 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace vroc::plugin_sdk {
+#include "vroc/core/csv.h"
 
+namespace vroc::plugins::force_log {
 ForceCsvFile::ForceCsvFile(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
     // A log left by an earlier run must not pass for this run's: it disappears now and the new one
     // appears complete, by rename, at finish().
@@ -27,11 +28,18 @@ ForceCsvFile::~ForceCsvFile() { finish(); }
 std::string ForceCsvFile::append(const VrocForceCommand& c) {
     std::lock_guard lock(mutex_);
     if (!file_) return partial_ + " is already closed";
-    const int n = std::fprintf(file_, "%lld,%u,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
-                               static_cast<long long>(c.time_ns), c.sensor, c.force[0], c.force[1], c.force[2],
-                               c.torque[0], c.torque[1], c.torque[2]);
+    std::string row;
+    csv::appendInteger(row, c.time_ns);
+    row += ',';
+    csv::appendInteger(row, c.sensor);
+    for (const double* v : {c.force, c.torque})
+        for (int i = 0; i < 3; ++i) {
+            row += ',';
+            csv::appendNumber(row, v[i]);
+        }
+    row += '\n';
     // Flushed row by row so that a reader sees every force already handed over.
-    if (n < 0 || std::fflush(file_) != 0) {
+    if (std::fputs(row.c_str(), file_) < 0 || std::fflush(file_) != 0) {
         failed_ = true;
         return "cannot write " + partial_ + ": " + std::strerror(errno);
     }
@@ -65,4 +73,4 @@ uint64_t ForceCsvFile::rows() const {
     return rows_;
 }
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::force_log

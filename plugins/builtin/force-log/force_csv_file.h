@@ -2,8 +2,9 @@
 // The force log written by the force-log plugin: one row per force command,
 //   time_ns,sensor,fx,fy,fz,tx,ty,tz
 // (host time [ns], sensor index, force [N] and torque [N m] in the base frame, doubles with 17
-// significant digits so a round trip is exact). Rows go to PATH.partial and are flushed one by
-// one; finish() closes it and renames it to PATH, so PATH exists only once the log is complete.
+// significant digits so a round trip is exact, whatever the locale: vroc/core/csv.h). Rows go to
+// PATH.partial and are flushed one by one; finish() closes it and renames it to PATH, so PATH
+// exists only once the log is complete.
 #pragma once
 
 #include <cstdint>
@@ -13,7 +14,7 @@
 
 #include "vroc/plugin/vroc_device_plugin.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::force_log {
 
 inline constexpr const char* kForceCsvHeader = "time_ns,sensor,fx,fy,fz,tx,ty,tz";
 
@@ -42,4 +43,4 @@ private:
     bool failed_ = false;
 };
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::force_log

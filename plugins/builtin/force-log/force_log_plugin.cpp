@@ -9,7 +9,9 @@
 #include "force_csv_file.h"
 #include "plugin_sdk.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::force_log {
+using namespace plugin_sdk;
+
 namespace {
 
 constexpr const char* kHelp =
@@ -99,6 +101,6 @@ const PluginDefinition kDefinition = {"force-log", "1.0.0",
                                       1, describe, create};
 
 }  // namespace
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::force_log
 
-VROC_DEFINE_PLUGIN(vroc::plugin_sdk::kDefinition)
+VROC_DEFINE_PLUGIN(vroc::plugins::force_log::kDefinition)

@@ -3,7 +3,8 @@
 
 #include "pose_math.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::predict {
+using namespace plugin_sdk;
 
 PosePredictor::PosePredictor(PredictMethod method, const KalmanTuning& t)
     : method_(method),
@@ -82,4 +83,4 @@ Prediction PosePredictor::kalman(double ahead) const {
     return out;
 }
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::predict

@@ -14,9 +14,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "axis_kalman.h"
+#include "vroc/core/axis_kalman.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::predict {
 
 enum class PredictMethod { None, ConstantVelocity, Kalman };
 
@@ -64,4 +64,4 @@ private:
     Eigen::Quaterniond reference_ = Eigen::Quaterniond::Identity();  // orientation = exp(increment) * reference
 };
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::predict

@@ -13,7 +13,9 @@
 #include "pose_math.h"
 #include "pose_predictor.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::predict {
+using namespace plugin_sdk;
+
 namespace {
 
 constexpr const char* kHelp =
@@ -150,6 +152,6 @@ const PluginDefinition kDefinition = {"predict", "1.0.0",
                                       1, describe, create};
 
 }  // namespace
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::predict
 
-VROC_DEFINE_PLUGIN(vroc::plugin_sdk::kDefinition)
+VROC_DEFINE_PLUGIN(vroc::plugins::predict::kDefinition)

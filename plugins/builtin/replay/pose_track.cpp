@@ -5,7 +5,16 @@
 
 #include "pose_math.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::replay {
+using namespace plugin_sdk;
+
+namespace {
+
+// [ns] from a to b >= a, exact: the difference of two int64 times can exceed the int64 range (a
+// recording may span any times the CSV holds), never the uint64 one.
+uint64_t nsFrom(int64_t a, int64_t b) { return static_cast<uint64_t>(b) - static_cast<uint64_t>(a); }
+
+}  // namespace
 
 TrackPose PoseTrack::at(int64_t t) const {
     const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
@@ -22,8 +31,9 @@ TrackPose PoseTrack::at(int64_t t) const {
                                   [](int64_t time, const TrackSample& s) { return time < s.time_ns; });
     const TrackSample& b = *upper;
     const TrackSample& a = *(upper - 1);
-    const double dt = secondsOf(b.time_ns - a.time_ns);
-    const double f = static_cast<double>(t - a.time_ns) / static_cast<double>(b.time_ns - a.time_ns);
+    const double span_ns = static_cast<double>(nsFrom(a.time_ns, b.time_ns));
+    const double dt = span_ns * 1e-9;
+    const double f = static_cast<double>(nsFrom(a.time_ns, t)) / span_ns;
     TrackPose pose;
     pose.position = a.position + f * (b.position - a.position);
     pose.orientation = a.orientation.slerp(f, b.orientation);
@@ -35,4 +45,4 @@ TrackPose PoseTrack::at(int64_t t) const {
     return pose;
 }
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::replay

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::replay {
 
 struct TrackSample {
     int64_t time_ns;
@@ -41,4 +41,4 @@ private:
     std::vector<TrackSample> samples_;
 };
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::replay

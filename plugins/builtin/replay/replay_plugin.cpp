@@ -3,6 +3,9 @@
 // by vroc::plugins::PoseRecorder). get_pose(t) interpolates between the samples around t
 // (position linearly, orientation by slerp) and reports the velocity between them; before the
 // first and after the last sample it holds the end pose, valid but not tracked.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
 
 #include "plugin_sdk.h"
@@ -10,10 +13,16 @@
 #include "pose_math.h"
 #include "pose_track.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::replay {
+using namespace plugin_sdk;
+
 namespace {
 
 constexpr uint32_t kMaxSensors = 16;
+// [m] largest |coordinate| of a recorded position, as for scenes (core scene_limits.h): within it
+// interpolation and velocities stay finite even 1 ns apart (beyond it, 1e308 then -1e308 gave an
+// infinite pose the host rejects at run time; found with tests/fuzz/pose_csv_fuzz, docs/fuzzing.md).
+constexpr double kMaxCoordinate = 1e6;
 constexpr const char* kHelp =
     "file=PATH: the recording (required); offset=0: seconds added to the recorded times; "
     "loop=0: repeat the recording";
@@ -45,11 +54,13 @@ public:
     }
 
 private:
+    // In 128 bits: host time, offset and the recording's times are each any int64, and their
+    // differences need not be. A time beyond the int64 range is beyond the recording: held there.
     int64_t recordingTime(const PoseTrack& track, int64_t host_ns) const {
-        int64_t t = host_ns - offset_ns_;
-        const int64_t length = track.lastTime() - track.firstTime();
-        if (loop_ && length > 0 && t > track.lastTime()) t = track.firstTime() + (t - track.firstTime()) % length;
-        return t;
+        __int128 t = static_cast<__int128>(host_ns) - offset_ns_;
+        const __int128 first = track.firstTime(), length = track.lastTime() - first;
+        if (loop_ && length > 0 && t > track.lastTime()) t = first + (t - first) % length;
+        return static_cast<int64_t>(std::clamp<__int128>(t, INT64_MIN, INT64_MAX));
     }
 
     std::vector<PoseTrack> tracks_;
@@ -72,6 +83,10 @@ std::vector<PoseTrack> readRecording(const std::string& path) {
         const std::string where = "replay: " + path + ":" + std::to_string(number) + ": ";
         if (!parsePoseCsvRow(line, row, error)) throw OptionError(where + error);
         if (row.sensor >= kMaxSensors) throw OptionError(where + "sensor " + std::to_string(row.sensor) + " >= 16");
+        for (int i = 0; i < 3; ++i)
+            if (!(std::abs(row.position[i]) <= kMaxCoordinate))
+                throw OptionError(where + "column " + "xyz"[i] + ": expected a position within +-1e6 m, got " +
+                                  std::to_string(row.position[i]));
         if (row.time_ns < last[row.sensor]) throw OptionError(where + "time_ns goes backwards for this sensor");
         last[row.sensor] = row.time_ns;
         const auto& q = row.orientation;
@@ -108,6 +123,6 @@ const PluginDefinition kDefinition = {"replay", "1.0.0", "plays back a pose reco
                                       1, describe, create};
 
 }  // namespace
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::replay
 
-VROC_DEFINE_PLUGIN(vroc::plugin_sdk::kDefinition)
+VROC_DEFINE_PLUGIN(vroc::plugins::replay::kDefinition)

@@ -9,7 +9,9 @@
 #include "pose_math.h"
 #include "spacemouse_script.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacemouse_sim {
+using namespace plugin_sdk;
+
 namespace {
 
 constexpr const char* kHelp =
@@ -79,6 +81,6 @@ const PluginDefinition kDefinition = {"spacemouse-sim", "1.0.0",
                                       1, describe, create};
 
 }  // namespace
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacemouse_sim
 
-VROC_DEFINE_PLUGIN(vroc::plugin_sdk::kDefinition)
+VROC_DEFINE_PLUGIN(vroc::plugins::spacemouse_sim::kDefinition)

@@ -8,7 +8,8 @@
 #include "analog_fly.h"
 #include "options.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacemouse_sim {
+using namespace plugin_sdk;
 
 std::vector<MouseSegment> parseMouseScript(const std::string& text) {
     std::string normalised = text;
@@ -95,4 +96,4 @@ MouseState MouseScript::at(double t) const {
     return advance(starts_[i], segments_[i], t - start_times_[i]);
 }
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacemouse_sim

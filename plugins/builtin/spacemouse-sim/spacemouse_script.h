@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacemouse_sim {
 
 struct MouseSegment {
     double duration = 0;            ///< [s] > 0
@@ -49,4 +49,4 @@ private:
     double max_speed_, max_rate_;
 };
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacemouse_sim

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacenav {
+
+using plugin_sdk::secondsOf;
 
 MouseTrack::MouseTrack(const AnalogFly& fly, const Eigen::Vector3d& start, int64_t t0, size_t max_history)
     : fly_(fly), max_history_(std::max<size_t>(2, max_history)) {
@@ -45,4 +47,4 @@ MouseSample MouseTrack::at(int64_t t) const {
     return out;
 }
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacenav

@@ -14,7 +14,10 @@
 
 #include "analog_fly.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacenav {
+
+using plugin_sdk::AnalogFly;
+using plugin_sdk::MouseAxes;
 
 struct MouseSample {
     int64_t event_time_ns = 0;         ///< [ns] host time of the newest event at or before the asked time
@@ -57,4 +60,4 @@ private:
     std::deque<Segment> segments_;  // by time; never empty
 };
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacenav

@@ -12,9 +12,11 @@
 
 #include "analog_fly.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacenav {
+
+using plugin_sdk::MouseAxes;
 
 /// counts = x, y, z, rx, ry, rz as spacenavd sends them; full_scale > 0.
 MouseAxes spacenavToVrocAxes(const std::array<int, 6>& counts, double full_scale);
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacenav

@@ -13,7 +13,7 @@
 #include <optional>
 #include <stdexcept>
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacenav {
 namespace {
 
 std::mutex g_mutex;   // guards g_open and the environment while spnav_open reads it
@@ -113,4 +113,4 @@ bool SpacenavConnection::poll(SpacenavEvent& out) {
     return true;
 }
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacenav

@@ -21,7 +21,7 @@
 #include <array>
 #include <string>
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacenav {
 
 /// One event as libspnav decoded it (spnav.h stays out of this header: it pulls in Xlib, whose
 /// macros clash with Eigen).
@@ -53,4 +53,4 @@ private:
     std::string peer_;
 };
 
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacenav

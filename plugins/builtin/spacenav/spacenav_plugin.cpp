@@ -19,7 +19,9 @@
 #include "spacenav_axes.h"
 #include "spacenav_connection.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::spacenav {
+using namespace plugin_sdk;
+
 namespace {
 
 constexpr const char* kHelp =
@@ -161,6 +163,6 @@ const PluginDefinition kDefinition = {"spacenav", "1.0.0",
                                       describe, create};
 
 }  // namespace
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::spacenav
 
-VROC_DEFINE_PLUGIN(vroc::plugin_sdk::kDefinition)
+VROC_DEFINE_PLUGIN(vroc::plugins::spacenav::kDefinition)

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "opentrack_datagram.h"
 
-namespace vroc::plugin_sdk {
+#include <cmath>
+#include <cstring>
 
+namespace vroc::plugins::udp {
 OpentrackPose opentrackToPose(const std::array<double, 6>& v) {
     constexpr double kDeg = 3.14159265358979323846 / 180;
     OpentrackPose pose;
@@ -13,4 +15,13 @@ OpentrackPose opentrackToPose(const std::array<double, 6>& v) {
     return pose;
 }
 
-}  // namespace vroc::plugin_sdk
+std::string decodeOpentrackDatagram(const unsigned char* data, size_t size, std::array<double, 6>& values) {
+    if (size != kOpentrackDatagramSize)
+        return "datagram of " + std::to_string(size) + " bytes, expected " + std::to_string(kOpentrackDatagramSize);
+    std::memcpy(values.data(), data, kOpentrackDatagramSize);
+    for (double v : values)
+        if (!std::isfinite(v)) return "datagram with a non-finite value";
+    return {};
+}
+
+}  // namespace vroc::plugins::udp

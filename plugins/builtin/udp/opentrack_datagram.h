@@ -11,11 +11,12 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::udp {
 
 inline constexpr size_t kOpentrackDatagramSize = 48;
 
@@ -26,4 +27,8 @@ struct OpentrackPose {
 
 OpentrackPose opentrackToPose(const std::array<double, 6>& values);
 
-}  // namespace vroc::plugin_sdk
+/// What the receiver accepts: exactly kOpentrackDatagramSize bytes, every value finite. Returns ""
+/// and fills `values`, or why the datagram is dropped (then `values` is unspecified).
+std::string decodeOpentrackDatagram(const unsigned char* data, size_t size, std::array<double, 6>& values);
+
+}  // namespace vroc::plugins::udp

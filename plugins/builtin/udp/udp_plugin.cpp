@@ -11,7 +11,6 @@
 
 #include <atomic>
 #include <cerrno>
-#include <cmath>
 #include <cstring>
 #include <mutex>
 #include <thread>
@@ -20,7 +19,9 @@
 #include "plugin_sdk.h"
 #include "pose_math.h"
 
-namespace vroc::plugin_sdk {
+namespace vroc::plugins::udp {
+using namespace plugin_sdk;
+
 namespace {
 
 constexpr const char* kHelp =
@@ -93,11 +94,8 @@ private:
     }
 
     void accept(const unsigned char* buffer, size_t size) {
-        if (size != kOpentrackDatagramSize) return drop("datagram of " + std::to_string(size) + " bytes, expected 48");
         std::array<double, 6> values;
-        std::memcpy(values.data(), buffer, kOpentrackDatagramSize);
-        for (double v : values)
-            if (!std::isfinite(v)) return drop("datagram with a non-finite value");
+        if (std::string why = decodeOpentrackDatagram(buffer, size, values); !why.empty()) return drop(why);
         const int64_t now = nowNs();
         std::lock_guard lock(mutex_);
         newest_ = values;
@@ -145,6 +143,6 @@ const PluginDefinition kDefinition = {"udp", "1.0.0", "opentrack UDP receiver (4
                                       describe, create};
 
 }  // namespace
-}  // namespace vroc::plugin_sdk
+}  // namespace vroc::plugins::udp
 
-VROC_DEFINE_PLUGIN(vroc::plugin_sdk::kDefinition)
+VROC_DEFINE_PLUGIN(vroc::plugins::udp::kDefinition)

@@ -19,6 +19,18 @@ std::string programDir() {
     return std::filesystem::path(buffer).parent_path().string();
 }
 
+#ifdef VROC_BUILD_TREE_DIR
+// True if `dir` is `root` or below it (both resolved).
+bool isWithin(const std::string& dir, const std::string& root) {
+    std::error_code ec;
+    const std::filesystem::path d = std::filesystem::weakly_canonical(dir, ec);
+    if (ec) return false;
+    const std::filesystem::path r = std::filesystem::weakly_canonical(root, ec);
+    if (ec) return false;
+    return std::mismatch(r.begin(), r.end(), d.begin(), d.end()).first == r.end();
+}
+#endif
+
 }  // namespace
 
 std::string pluginFileName(const std::string& name) { return "vroc-plugin-" + name + ".so"; }
@@ -37,9 +49,17 @@ std::vector<std::string> pluginSearchDirs(const std::vector<std::string>& extra,
         }
     }
     if (use_default_dirs) {
-        if (std::string exe = programDir(); !exe.empty()) dirs.push_back(exe + "/../lib/vroc-plugins");
-#ifdef VROC_PLUGIN_BUILD_DIR
-        dirs.push_back(VROC_PLUGIN_BUILD_DIR);
+        const std::string exe = programDir();
+        if (!exe.empty()) {
+            dirs.push_back(exe + "/../lib/vroc-plugins");   // the build tree's layout
+#ifdef VROC_PLUGIN_INSTALL_RELDIR
+            dirs.push_back(exe + "/" + VROC_PLUGIN_INSTALL_RELDIR);   // installed: <libdir>/vroc/plugins
+#endif
+        }
+#if defined(VROC_PLUGIN_BUILD_DIR) && defined(VROC_BUILD_TREE_DIR)
+        // Only for programs that run from the build tree: an installed program (or one linking
+        // the installed library) never looks into the build it came from.
+        if (!exe.empty() && isWithin(exe, VROC_BUILD_TREE_DIR)) dirs.push_back(VROC_PLUGIN_BUILD_DIR);
 #endif
     }
     // Drop repeats (the program-relative and build directories usually coincide).

@@ -10,111 +10,6 @@
 
 namespace vroc::test {
 
-Scene emptyScene(double restitution, double friction) {
-    Scene s;
-    s.name = "test";
-    s.gravity = Vec3(0, 0, -9.81);
-    s.frame_dt = 1.0 / 60.0;
-    s.collision_distance = 1e-3;
-    s.materials.push_back({"default", restitution, friction});
-    return s;
-}
-
-int addMaterial(Scene& scene, const std::string& name, double restitution, double friction) {
-    scene.materials.push_back({name, restitution, friction});
-    return static_cast<int>(scene.materials.size()) - 1;
-}
-
-static int push(Scene& scene, Body b) {
-    scene.bodies.push_back(std::move(b));
-    return static_cast<int>(scene.bodies.size()) - 1;
-}
-
-int addFloor(Scene& scene, int material) {
-    Body b;
-    b.name = "floor";
-    b.role = BodyRole::Real;
-    b.material = material;
-    b.shape = Shape::box(Vec3(10, 10, 0.5));
-    b.pose.position = Vec3(0, 0, -0.5);
-    return push(scene, std::move(b));
-}
-
-int addBall(Scene& scene, const std::string& name, double radius, double mass, const Vec3& position, int material) {
-    Body b;
-    b.name = name;
-    b.material = material;
-    b.shape = Shape::sphere(radius);
-    b.pose.position = position;
-    b.mass_properties.mass = mass;
-    b.mass_properties.volume = 4.0 / 3.0 * M_PI * radius * radius * radius;
-    b.mass_properties.inertia = Mat3::Identity() * (0.4 * mass * radius * radius);
-    return push(scene, std::move(b));
-}
-
-Mat3 cuboidInertia(const Vec3& h, double m) {
-    return Vec3(m / 3 * (h.y() * h.y() + h.z() * h.z()), m / 3 * (h.x() * h.x() + h.z() * h.z()),
-                m / 3 * (h.x() * h.x() + h.y() * h.y()))
-        .asDiagonal();
-}
-
-int addBox(Scene& scene, const std::string& name, const Vec3& half, double mass, const Vec3& position, int material) {
-    Body b;
-    b.name = name;
-    b.material = material;
-    b.shape = Shape::box(half);
-    b.pose.position = position;
-    b.mass_properties.mass = mass;
-    b.mass_properties.volume = 8 * half.prod();
-    b.mass_properties.inertia = cuboidInertia(half, mass);
-    return push(scene, std::move(b));
-}
-
-ConvexPolyhedron cuboidHull(const Vec3& half, const Quat& rot, const Vec3& centre) {
-    ConvexPolyhedron p;
-    for (int i = 0; i < 8; ++i) {
-        const Vec3 local((i & 1) ? half.x() : -half.x(), (i & 2) ? half.y() : -half.y(), (i & 4) ? half.z() : -half.z());
-        p.vertices.push_back(rot * local + centre);
-    }
-    // Faces counter-clockwise seen from outside: -x, +x, -y, +y, -z, +z.
-    p.faces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-    const Vec3 axes[6] = {-Vec3::UnitX(), Vec3::UnitX(), -Vec3::UnitY(), Vec3::UnitY(), -Vec3::UnitZ(), Vec3::UnitZ()};
-    for (const Vec3& axis : axes) {
-        const Vec3 n = rot * axis;
-        p.face_normals.push_back(n);
-        p.face_offsets.push_back(n.dot(centre) + std::abs(axis.dot(half)));
-    }
-    return p;
-}
-
-int addHullCuboid(Scene& scene, const std::string& name, const Vec3& half, double mass, const Pose& pose,
-                  const Quat& rot, const Vec3& centre, int material) {
-    Body b;
-    b.name = name;
-    b.material = material;
-    b.shape = Shape::convexHull(cuboidHull(half, rot, centre));
-    b.pose = pose;
-    b.mass_properties.mass = mass;
-    b.mass_properties.volume = 8 * half.prod();
-    b.mass_properties.center_of_mass = centre;
-    const Mat3 R = rot.toRotationMatrix();
-    b.mass_properties.inertia = R * cuboidInertia(half, mass) * R.transpose();
-    return push(scene, std::move(b));
-}
-
-int addTrackedBox(Scene& scene, const std::string& name, const Vec3& half, const Pose& pose, const Vec3& velocity,
-                  const Vec3& angular_velocity, int material) {
-    Body b;
-    b.name = name;
-    b.role = BodyRole::Tracked;
-    b.material = material;
-    b.shape = Shape::box(half);
-    b.pose = pose;
-    b.linear_velocity = velocity;
-    b.angular_velocity = angular_velocity;
-    return push(scene, std::move(b));
-}
-
 TrackedStrike trackedStrike(double e, double speed, double gap) {
     TrackedStrike s;
     s.scene = emptyScene(e, 0.0);
@@ -122,8 +17,7 @@ TrackedStrike trackedStrike(double e, double speed, double gap) {
     s.scene.gravity = Vec3::Zero();
     s.ball = addBall(s.scene, "ball", 0.1, 1.0, Vec3::Zero());
     s.plate_start = Vec3(-0.1 - gap - 0.05, 0, 0);
-    s.plate = addTrackedBox(s.scene, "plate", Vec3(0.05, 0.5, 0.5), Pose{s.plate_start, Quat::Identity()},
-                            Vec3(speed, 0, 0));
+    s.plate = addTracked(s.scene, "plate", Shape::box(Vec3(0.05, 0.5, 0.5)), at(s.plate_start), 0, Vec3(speed, 0, 0));
     return s;
 }
 
@@ -141,8 +35,8 @@ std::vector<LiftSample> trackedLift(const BackendFactory& make, double speed, do
                                     const Overrides& overrides) {
     Scene scene = emptyScene(0.2, 0.6);
     scene.name = "tracked_lift";
-    const int platform = addTrackedBox(scene, "platform", Vec3(0.5, 0.5, 0.05), Pose{Vec3(0, 0, -0.05), Quat::Identity()},
-                                       Vec3(0, 0, speed));
+    const int platform =
+        addTracked(scene, "platform", Shape::box(Vec3(0.5, 0.5, 0.05)), at(Vec3(0, 0, -0.05)), 0, Vec3(0, 0, speed));
     const int box = addBox(scene, "box", Vec3(0.1, 0.1, 0.1), 2.0, Vec3(0, 0, 0.1005));
     auto backend = make(scene, overrides);
     std::vector<LiftSample> out;

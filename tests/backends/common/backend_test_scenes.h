@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Scenes for the reference backends' tests (bullet, ode, mujoco), built in code with closed-form
-// mass properties: one home for the builders; each suite adds its own make<Backend>().
+// Scenarios for the reference backends' tests (bullet, ode, mujoco): strikes, drops, lifts and
+// timed runs, built with the shared scene builders (tests/support/test_scene_builder.h); each suite
+// adds its own make<Backend>().
 #pragma once
 
 #include <filesystem>
@@ -10,34 +11,11 @@
 #include <utility>
 #include <vector>
 
+#include "test_scene_builder.h"
 #include "vroc/core/backend.h"
 #include "vroc/core/scene.h"
 
 namespace vroc::test {
-
-/// Empty scene: gravity (0, 0, -9.81), frame dt 1/60 s, collision distance 1 mm, material "default".
-Scene emptyScene(double restitution = 0.5, double friction = 0.5);
-/// Adds a material, returns its index.
-int addMaterial(Scene& scene, const std::string& name, double restitution, double friction);
-/// Real box 20 x 20 x 1 m whose top face is the plane z = 0.
-int addFloor(Scene& scene, int material = 0);
-/// Virtual sphere [m, kg], solid: I = 2/5 m r^2.
-int addBall(Scene& scene, const std::string& name, double radius, double mass, const Vec3& position, int material = 0);
-/// Virtual box shape [half extents m]: I = m/3 (b^2 + c^2) ...
-int addBox(Scene& scene, const std::string& name, const Vec3& half, double mass, const Vec3& position, int material = 0);
-/// A cuboid as a hull (faces and planes filled in by hand), vertices rotated by `rot` and shifted
-/// by `centre` in the body frame: COM = centre, inertia R diag R^T.
-ConvexPolyhedron cuboidHull(const Vec3& half, const Quat& rot = Quat::Identity(), const Vec3& centre = Vec3::Zero());
-int addHullCuboid(Scene& scene, const std::string& name, const Vec3& half, double mass, const Pose& pose,
-                  const Quat& rot_in_body = Quat::Identity(), const Vec3& centre_in_body = Vec3::Zero(),
-                  int material = 0);
-/// Solid cuboid inertia about its centre, in its own axes [kg m^2].
-Mat3 cuboidInertia(const Vec3& half, double mass);
-
-/// Tracked box [half extents m] (scene.h: infinite mass, mass properties zero) at `pose`, moving at
-/// `velocity` [m/s] of its origin and `angular_velocity` [rad/s], world frame.
-int addTrackedBox(Scene& scene, const std::string& name, const Vec3& half, const Pose& pose, const Vec3& velocity,
-                  const Vec3& angular_velocity = Vec3::Zero(), int material = 0);
 
 /// A plate strikes a ball: no gravity, ball r = 0.1 m, 1 kg, at rest at the origin; a tracked plate
 /// (box, half extents 0.05 x 0.5 x 0.5 m) on the -x side, its +x face `gap` [m] from the ball,

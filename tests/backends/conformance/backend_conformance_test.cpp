@@ -88,7 +88,7 @@ TEST_P(Conformance, SetBodyStateRoundTrips) {
         const Scene scene = lonelyBody(shape);
         auto b = create(GetParam(), scene);
         BodyState s;
-        s.pose = poseAt(Vec3(1.25, -0.5, 2.0), Quat(Eigen::AngleAxisd(2.1, Vec3(-1, 0.5, 2).normalized())));
+        s.pose = at(Vec3(1.25, -0.5, 2.0), Quat(Eigen::AngleAxisd(2.1, Vec3(-1, 0.5, 2).normalized())));
         s.linear_velocity = Vec3(0.3, -1.2, 2.5);
         s.angular_velocity = Vec3(-0.7, 1.9, 0.4);
         b->setBodyState(1, s);
@@ -155,7 +155,7 @@ TEST_P(Conformance, TrackedBodiesMoveAsPrescribed) {
     EXPECT_LE((s.linear_velocity - body.linear_velocity).norm(), 1e-9);
     EXPECT_LE((s.angular_velocity - body.angular_velocity).norm(), 1e-9);
     BodyState sample;
-    sample.pose = poseAt(Vec3(2, 1, 0), Quat::Identity());
+    sample.pose = at(Vec3(2, 1, 0), Quat::Identity());
     sample.linear_velocity = Vec3(-1, 0, 0);
     b->setBodyState(1, sample);
     for (int f = 0; f < 6; ++f) b->stepFrame(scene.frame_dt);
@@ -179,17 +179,17 @@ TEST_P(Conformance, TrackedBodiesMoveAsPrescribed) {
 TEST_P(Conformance, TrackedBodiesPassThroughRealAndTrackedBodies) {
     if (infoOf(GetParam()).capabilities.tracked == Support::Unsupported) GTEST_SKIP() << "no tracked bodies";
     Scene scene = sceneWithMaterial(Vec3(0, 0, -9.81));
-    addBody(scene, "floor", Shape::box(Vec3(5, 5, 0.5)), poseAt(Vec3(0, 0, -0.5)), true);
+    addBody(scene, "floor", Shape::box(Vec3(5, 5, 0.5)), at(Vec3(0, 0, -0.5)), 0, true);
     Scene one = lonelyTrackedBody(Shape::box(Vec3(0.2, 0.2, 0.02)));
     Body a = one.bodies[1];
     a.name = "a";
-    a.pose = poseAt(Vec3(0, 0, 0.5), Quat::Identity());
+    a.pose = at(Vec3(0, 0, 0.5), Quat::Identity());
     a.linear_velocity = Vec3(0, 0, -1.0);
     a.angular_velocity = Vec3::Zero();
     Body c = a;
     c.name = "c";
     c.shape = Shape::box(Vec3(0.02, 0.2, 0.2));
-    c.pose = poseAt(Vec3(-0.5, 0, 0), Quat::Identity());
+    c.pose = at(Vec3(-0.5, 0, 0), Quat::Identity());
     c.linear_velocity = Vec3(1.0, 0, 0);
     c.angular_velocity = Vec3(0, 0, 2.0);
     scene.bodies.push_back(a);
@@ -276,7 +276,7 @@ TEST_P(Conformance, UnsupportedShapesAreRefusedAtCreation) {
     const BackendCapabilities& c = infoOf(GetParam()).capabilities;
     std::vector<std::pair<Support, Shape>> kinds{
         {c.sphere, Shape::sphere(0.2)}, {c.box, Shape::box(Vec3(0.2, 0.2, 0.2))}, {c.hull, irregularHull()},
-        {c.compound, Shape::compound({{Shape::sphere(0.1), poseAt(Vec3(0.2, 0, 0))}, {Shape::sphere(0.1), poseAt(Vec3(-0.2, 0, 0))}})}};
+        {c.compound, Shape::compound({{Shape::sphere(0.1), at(Vec3(0.2, 0, 0))}, {Shape::sphere(0.1), at(Vec3(-0.2, 0, 0))}})}};
     int refused = 0;
     for (auto& [support, shape] : kinds) {
         if (support != Support::Unsupported) continue;

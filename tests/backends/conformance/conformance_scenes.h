@@ -5,43 +5,23 @@
 #include <string>
 #include <vector>
 
+#include "test_scene_builder.h"
 #include "vroc/core/convex_polyhedron.h"
 #include "vroc/core/mass_properties.h"
 #include "vroc/core/scene.h"
 
 namespace vroc::conformance {
 
-inline Pose poseAt(const Vec3& p, const Quat& q = Quat::Identity()) {
-    Pose pose;
-    pose.position = p;
-    pose.orientation = q;
-    return pose;
-}
+// The shared builders (tests/support/test_scene_builder.h), by their names here.
+using vroc::test::addBody;
+using vroc::test::at;
 
+/// The shared empty scene with `gravity` [m/s^2]: material 0 (restitution 0.5, friction 0.5).
 inline Scene sceneWithMaterial(const Vec3& gravity) {
-    Scene s;
+    Scene s = vroc::test::emptyScene(0.5, 0.5);
     s.name = "conformance";
     s.gravity = gravity;
-    s.collision_distance = 1e-3;
-    s.frame_dt = 1.0 / 60.0;
-    Material m;
-    m.name = "m";
-    m.restitution = 0.5;
-    m.friction = 0.5;
-    s.materials.push_back(m);
     return s;
-}
-
-inline int addBody(Scene& s, const std::string& name, Shape shape, const Pose& pose, bool real, double mass = 2.0) {
-    Body b;
-    b.name = name;
-    b.role = real ? BodyRole::Real : BodyRole::Virtual;
-    b.material = 0;
-    b.shape = std::move(shape);
-    b.pose = pose;
-    if (!real) b.mass_properties = massProperties(b.shape, mass);
-    s.bodies.push_back(std::move(b));
-    return static_cast<int>(s.bodies.size()) - 1;
 }
 
 /// An irregular hull (8 points, no symmetry): its centre of mass is off the body origin and its
@@ -56,9 +36,9 @@ inline Shape irregularHull() {
 /// below, so the scene has a real body): the momentum and round-trip clauses.
 inline Scene lonelyBody(Shape shape) {
     Scene s = sceneWithMaterial(Vec3::Zero());
-    addBody(s, "floor", Shape::box(Vec3(5, 5, 0.5)), poseAt(Vec3(0, 0, -100)), true);
-    addBody(s, "body", std::move(shape), poseAt(Vec3(0.1, -0.2, 1.0), Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()))),
-            false);
+    addBody(s, "floor", Shape::box(Vec3(5, 5, 0.5)), at(Vec3(0, 0, -100)), 0, true);
+    addBody(s, "body", std::move(shape), at(Vec3(0.1, -0.2, 1.0), Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()))),
+            0, false, 2.0);
     return s;
 }
 

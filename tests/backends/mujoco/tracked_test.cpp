@@ -65,8 +65,8 @@ double paddleStrike(const Overrides& overrides) {
     scene.gravity = Vec3::Zero();
     const int ball = addBall(scene, "ball", 0.05, 0.2, Vec3(0, 0.3, 0));
     const Quat start(Eigen::AngleAxisd(-0.6, Vec3::UnitZ()));
-    const int paddle = addTrackedBox(scene, "paddle", Vec3(0.5, 0.02, 0.1), Pose{Vec3::Zero(), start}, Vec3::Zero(),
-                                     Vec3(0, 0, omega));
+    const int paddle = addTracked(scene, "paddle", Shape::box(Vec3(0.5, 0.02, 0.1)), at(Vec3::Zero(), start), 0,
+                                  Vec3::Zero(), Vec3(0, 0, omega));
     auto backend = makeMujoco(scene, overrides);
     std::vector<CollisionEvent> events;
     const double h = 1.0 / 240.0;

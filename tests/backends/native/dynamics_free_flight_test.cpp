@@ -13,7 +13,7 @@ namespace vroc::native::test {
 namespace {
 
 TEST(DynamicsFreeFlight, BallisticMatchesClosedForm) {
-    Scene s = emptyScene();
+    Scene s = bareScene();
     addMaterial(s, 0.5, 0.5);
     Body& b = s.bodies.emplace_back();
     b.name = "b";

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // contactPatch against closed forms: face-face overlap rectangle, edge on face, vertex contact.
+#include "narrowphase/contact_patch.h"
 #include "narrowphase_check.h"
 
 namespace vroc::native::testing {

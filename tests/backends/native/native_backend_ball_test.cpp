@@ -25,9 +25,9 @@ std::vector<Bounce> dropBall(double restitution, double h, int bounces, double& 
                              ResponseModel model = ResponseModel::NewtonCoulomb, double collision_distance = 1e-4) {
     const double r = 0.1;
     const double g = 9.81;
-    Scene s = emptyScene(collision_distance);
+    Scene s = bareScene(collision_distance);
     const int mat = addMaterial(s, restitution, 0.5);
-    addFloor(s, mat);
+    addFloor(s, mat, 20.0);
     const int ball = addBody(s, "ball", Shape::sphere(r), at(Vec3(0, 0, h + r)), mat, false);
     NativeSettings ns;
     ns.response = model;
@@ -106,9 +106,9 @@ TEST(NativeBall, BallPlacedInsideTheWindowRestsThere) {
     // Scenes place resting bodies within the collision distance (chair.json: 0.5 mm): that is
     // contact from the start, so the ball neither falls to the floor nor reports an impact.
     const double r = 0.1, cd = 1e-3, gap = 0.5e-3;
-    Scene s = emptyScene(cd);
+    Scene s = bareScene(cd);
     const int mat = addMaterial(s, 0.5, 0.5);
-    addFloor(s, mat);
+    addFloor(s, mat, 20.0);
     const int ball = addBody(s, "ball", Shape::sphere(r), at(Vec3(0, 0, r + gap)), mat, false);
     auto be = makeBackend(s);
     for (int f = 0; f < 120; ++f) be->stepFrame(s.frame_dt);

@@ -11,9 +11,9 @@ namespace vroc::native::test {
 namespace {
 
 Scene pileScene() {
-    Scene s = emptyScene(1e-3);
+    Scene s = bareScene(1e-3);
     const int mat = addMaterial(s, 0.4, 0.5);
-    addFloor(s, mat);
+    addFloor(s, mat, 20.0);
     std::mt19937_64 rng(99);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (int i = 0; i < 24; ++i) {
@@ -32,9 +32,9 @@ Scene pileScene() {
 
 // A 2-D pyramid of boxes, base `base`, 0.5 mm apart: one island of base^2-ish manifolds.
 Scene pyramidScene(int base) {
-    Scene s = emptyScene(1e-3);
+    Scene s = bareScene(1e-3);
     const int mat = addMaterial(s, 0.0, 0.6);
-    addFloor(s, mat);
+    addFloor(s, mat, 20.0);
     const double half = 0.1, gap = 5e-4;
     for (int row = 0; row < base; ++row)
         for (int k = 0; k < base - row; ++k) {

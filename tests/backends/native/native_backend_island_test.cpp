@@ -25,9 +25,9 @@ void addStack(Scene& s, int mat, double x, int n, double cd, double mass_odd = 1
 
 // A floor and the piles' material (e = 0, mu = 0.6).
 Scene restingScene(double cd, int& mat) {
-    Scene s = emptyScene(cd);
+    Scene s = bareScene(cd);
     mat = addMaterial(s, 0.0, 0.6);
-    addFloor(s, mat);
+    addFloor(s, mat, 20.0);
     return s;
 }
 
@@ -42,9 +42,9 @@ TEST(NativeIslands, AnImpactElsewhereLeavesAnIslandBitIdentical) {
     // with the same bits (its ticks are its own; B's impacts neither shorten nor read them).
     const double cd = 1e-3;
     auto build = [&](bool with_b) {
-        Scene s = emptyScene(cd);
+        Scene s = bareScene(cd);
         const int mat = addMaterial(s, 0.3, 0.5);
-        addFloor(s, mat);
+        addFloor(s, mat, 20.0);
         addStack(s, mat, 0.0, 5, cd);
         if (with_b) {
             addStack(s, mat, 5.0, 5, cd);
@@ -107,9 +107,9 @@ TEST(NativeIslands, BounceOffTheFloorIntoASlabAboveIsMet) {
     // top: its pair with the slab must be bounded with the new velocity at once, so the ball is
     // stopped by the slab and never passes into it (neutral check: its top stays below the slab).
     const double cd = 1e-3, r = 0.1;
-    Scene s = emptyScene(cd);
+    Scene s = bareScene(cd);
     const int mat = addMaterial(s, 0.5, 0.0);
-    addFloor(s, mat);
+    addFloor(s, mat, 20.0);
     const double slab_bottom = 2 * r + 0.5 * cd + 0.02;
     addBody(s, "slab", Shape::box(Vec3(1, 1, 0.01)), at(Vec3(0, 0, slab_bottom + 0.01)), mat, true);
     const int ball = addBody(s, "ball", Shape::sphere(r), at(Vec3(0, 0, r + 0.5 * cd)), mat, false, 1.0);

@@ -18,9 +18,9 @@ TEST(NativeRest, DroppedHullComesToRestWithinCollisionDistance) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::vector<Vec3> pts;
     for (int i = 0; i < 30; ++i) pts.push_back(Vec3(0.3 * u(rng), 0.2 * u(rng), 0.15 * u(rng)));
-    Scene s = emptyScene(1e-3);
+    Scene s = bareScene(1e-3);
     const int mat = addMaterial(s, 0.3, 0.6);
-    addFloor(s, mat);
+    addFloor(s, mat, 20.0);
     const int hull = addBody(s, "hull", Shape::convexHull(ConvexPolyhedron::fromPoints(pts)),
                              at(Vec3(0, 0, 0.5), Quat(Eigen::AngleAxisd(0.4, Vec3(1, 1, 0).normalized()))),
                              mat, false, 2.0);
@@ -47,9 +47,9 @@ TEST(NativeRest, SlidingBoxStopsAtCoulombDistanceForEveryHeading) {
     double lo = 1e9, hi = -1e9;
     for (int k = 0; k < 8; ++k) {
         const double heading = k * kPi / 16;   // 0 .. 78.75 degrees
-        Scene s = emptyScene(1e-3);
+        Scene s = bareScene(1e-3);
         const int mat = addMaterial(s, 0.0, mu);
-        addFloor(s, mat);
+        addFloor(s, mat, 20.0);
         const Quat yaw(Eigen::AngleAxisd(heading, Vec3::UnitZ()));
         const int box = addBody(s, "box", Shape::box(Vec3(0.25, 0.25, 0.25)),
                                 at(Vec3(0, 0, 0.25 + 0.5e-3), yaw), mat, false, 1.0);
@@ -72,7 +72,7 @@ TEST(NativeRest, SlidingBoxStopsAtCoulombDistanceForEveryHeading) {
 
 TEST(NativeRest, SphereRollsDownInclineAtFiveSevenths) {
     const double theta = 20.0 * kPi / 180, g = 9.81, r = 0.1, cd = 1e-3;
-    Scene s = emptyScene(cd);
+    Scene s = bareScene(cd);
     const int mat = addMaterial(s, 0.0, 0.6);
     const Quat tilt(Eigen::AngleAxisd(-theta, Vec3::UnitY()));
     const Vec3 n = tilt * Vec3::UnitZ();

@@ -10,9 +10,9 @@ namespace {
 
 Scene tenBoxStack(int& top) {
     const double cd = 1e-3, half = 0.25;
-    Scene s = emptyScene(cd);
+    Scene s = bareScene(cd);
     const int mat = addMaterial(s, 0.0, 0.5);
-    addFloor(s, mat);
+    addFloor(s, mat, 20.0);
     for (int i = 0; i < 10; ++i) {
         const double z = half + 0.5 * cd + i * (2 * half + 0.5 * cd);
         top = addBody(s, "box" + std::to_string(i), Shape::box(Vec3(half, half, half)), at(Vec3(0, 0, z)), mat,

@@ -14,7 +14,7 @@ namespace {
 /// No gravity: a ball of radius 0.1 at rest at the origin, a plate (tracked box, 2 cm thick)
 /// approaching along +x at `speed` from x = -0.5.
 struct PlateStrike {
-    Scene scene = emptyScene(1e-3, Vec3::Zero());
+    Scene scene = bareScene(1e-3, Vec3::Zero());
     int ball = -1, plate = -1;
     PlateStrike(double speed, double restitution) {
         const int m = addMaterial(scene, restitution, 0.0);
@@ -59,7 +59,7 @@ TEST(NativeTracked, SpinningPaddleGivesTheBallItsContactPointSpeed) {
     // p, the paddle's surface moves at omega x p, which is along the face normal: the ball leaves
     // with (1 + e) |omega| (p . axis) along that normal (frictionless, infinite mass).
     const double omega = 6.0, e = 0.5;
-    Scene scene = emptyScene(1e-3, Vec3::Zero());
+    Scene scene = bareScene(1e-3, Vec3::Zero());
     const int m = addMaterial(scene, e, 0.0);
     const int ball = addBody(scene, "ball", Shape::sphere(0.05), at(Vec3(0.0, 0.3, 0)), m, false, 0.2);
     const Quat start(Eigen::AngleAxisd(-0.6, Vec3::UnitZ()));
@@ -121,7 +121,7 @@ TEST(NativeTracked, SetBodyStateIsATrackerSampleTheBodyMovesOnFrom) {
 TEST(NativeTracked, PlatformLiftsARestingBoxAtItsOwnSpeed) {
     // A box resting on a tracked platform that rises at 0.5 m/s under gravity: the box rides on
     // it (velocity 0.5 m/s up, touching, never inside), a contact held by the contact phase.
-    Scene scene = emptyScene();
+    Scene scene = bareScene();
     const int m = addMaterial(scene, 0.2, 0.6);
     const int platform = addTracked(scene, "platform", Shape::box(Vec3(0.5, 0.5, 0.05)), at(Vec3(0, 0, -0.05)), m,
                                     Vec3(0, 0, 0.5));
@@ -143,9 +143,9 @@ TEST(NativeTracked, PlatformLiftsARestingBoxAtItsOwnSpeed) {
 TEST(NativeTracked, TrackedBodyPassesThroughRealBodiesWithoutResponse) {
     // Two bodies of infinite mass have no response: the tracked plate moves through the static
     // floor untouched and no event is reported for the pair.
-    Scene scene = emptyScene();
+    Scene scene = bareScene();
     const int m = addMaterial(scene, 0.5, 0.5);
-    addFloor(scene, m);
+    addFloor(scene, m, 20.0);
     const int plate = addTracked(scene, "plate", Shape::box(Vec3(0.2, 0.2, 0.01)), at(Vec3(0, 0, 0.5)), m,
                                  Vec3(0, 0, -1.0));
     auto backend = makeBackend(scene);
@@ -164,7 +164,7 @@ namespace vroc::native::test {
 namespace {
 
 TEST(NativeTracked, SleepingBoxOnAPlatformWakesWhenThePlatformMoves) {
-    Scene scene = emptyScene();
+    Scene scene = bareScene();
     const int m = addMaterial(scene, 0.2, 0.6);
     const int platform = addTracked(scene, "platform", Shape::box(Vec3(0.5, 0.5, 0.05)), at(Vec3(0, 0, -0.05)), m,
                                     Vec3::Zero());
@@ -189,7 +189,7 @@ TEST(NativeTracked, SleepingBoxOnAPlatformWakesWhenThePlatformMoves) {
 TEST(NativeTracked, BoxOnASlowlySinkingPlatformNeverSleepsInTheAir) {
     // The platform sinks at 5 mm/s, below the sleep speed: a box resting on it is still by the
     // speed test, but it touches a moving real object, so it stays awake and follows it down.
-    Scene scene = emptyScene();
+    Scene scene = bareScene();
     const int m = addMaterial(scene, 0.2, 0.6);
     const int platform = addTracked(scene, "platform", Shape::box(Vec3(0.5, 0.5, 0.05)), at(Vec3(0, 0, -0.05)), m,
                                     Vec3(0, 0, -0.005));

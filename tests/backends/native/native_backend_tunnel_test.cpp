@@ -11,7 +11,7 @@ namespace {
 
 TEST(NativeTunnel, SmallSphereNeverPassesThinWall) {
     for (double speed : {1.0, 20.0, 100.0, 250.0, 400.0}) {
-        Scene s = emptyScene(1e-3, Vec3::Zero());
+        Scene s = bareScene(1e-3, Vec3::Zero());
         const int mat = addMaterial(s, 0.5, 0.3);
         addBody(s, "wall", Shape::box(Vec3(0.01, 1.0, 1.0)), at(Vec3::Zero()), mat, true);
         const double r = 0.025;
@@ -33,7 +33,7 @@ TEST(NativeTunnel, SmallSphereNeverPassesThinWall) {
 }
 
 TEST(NativeTunnel, SpinningRodNeverPassesThinPost) {
-    Scene s = emptyScene(1e-3, Vec3::Zero());
+    Scene s = bareScene(1e-3, Vec3::Zero());
     const int mat = addMaterial(s, 0.5, 0.3);
     const Vec3 post_at(0, 0.35, 0);
     addBody(s, "post", Shape::box(Vec3(0.005, 0.005, 0.5)), at(post_at), mat, true);
@@ -76,7 +76,7 @@ namespace {
 // only the touching floor part bounding it, the ball ran into the riser (2,288 penetrations in
 // scenes/staircase.json before the fix).
 TEST(NativeTunnel, CompoundPartsEachBoundTheStep) {
-    Scene s = emptyScene(1e-3);
+    Scene s = bareScene(1e-3);
     const int mat = addMaterial(s, 0.5, 0.5);
     std::vector<ShapePart> parts;
     parts.push_back({Shape::box(Vec3(2, 1, 0.1)), at(Vec3(0, 0, -0.1))});   // tread: top at z = 0

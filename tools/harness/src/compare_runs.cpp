@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "compare_runs.h"
 
-#include <cstdio>
-
+#include "vroc/core/csv.h"
 #include "vroc/core/recording/atomic_output.h"
 #include "vroc/core/recording/event_writer.h"
 #include "vroc/core/recording/trajectory_writer.h"
@@ -46,10 +45,13 @@ void writeTraceCsv(const Scene& scene, const RunTrace& trace, const std::filesys
     }
     recording::AtomicFile file(dir / "step_times.csv");
     std::string text = "step,t_end,wall_us\n";
-    char line[96];
     for (std::size_t i = 0; i < trace.step_wall_s.size(); ++i) {
-        std::snprintf(line, sizeof line, "%zu,%.17g,%.6f\n", i + 1, trace.times[i + 1], trace.step_wall_s[i] * 1e6);
-        text += line;
+        csv::appendInteger(text, i + 1);
+        text += ',';
+        csv::appendNumber(text, trace.times[i + 1]);
+        text += ',';
+        csv::appendFixed(text, trace.step_wall_s[i] * 1e6, 6);
+        text += '\n';
     }
     file.write(text);
     file.commit();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The runs `vroc compare` makes per backend: main, twin (perturbed) and re-anchored windows.
+// Helpers for the runs `vroc compare` makes per backend (BackendRuns, compare.h): main, twin
+// (perturbed) and re-anchored windows.
 #pragma once
 
 #include <filesystem>
@@ -10,15 +11,6 @@
 #include "vroc/harness/run_trace.h"
 
 namespace vroc::harness {
-
-struct BackendRuns {
-    RunTrace main;                                     ///< from the scene's initial state
-    RunTrace twin;                                     ///< every virtual body moved by ε along x
-    std::vector<std::vector<BodyState>> window_ends;   ///< [anchor] state after one window
-    std::vector<double> penetration;                   ///< [m] per frame of main (neutral query)
-    std::string state_hash;                            ///< vroc::stateHash of main's final state
-    bool deterministic = false;                        ///< a rerun ended with the same state hash (M22)
-};
 
 /// Frame indices of the K anchors: evenly spread so that anchor + window fits in the run.
 std::vector<std::size_t> anchorFrames(std::size_t frames, int windows, std::int64_t window_frames);

@@ -2,11 +2,11 @@
 #include "vroc/harness/gnuplot_chart.h"
 
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 #include "vroc/core/errors.h"
+#include "vroc/core/subprocess.h"
 
 namespace vroc::harness {
 namespace fs = std::filesystem;
@@ -22,12 +22,6 @@ std::string gnuplotQuoted(const std::string& text) {
 }
 
 namespace {
-
-std::string shellQuoted(const std::string& word) {
-    std::string out = "'";
-    for (char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
 
 void writeText(const fs::path& path, const std::string& text) {
     std::ofstream out(path);
@@ -84,8 +78,15 @@ std::string renderChart(const Json& chart, const fs::path& dir) {
     writeText(dat, dataFile(chart));
     if (chart["series"].empty()) return "<p class=\"nodata\">no data to plot</p>";
     writeText(gp, script(chart, dat, svg));
-    const std::string command = "gnuplot " + shellQuoted(gp.string()) + " 2>" + shellQuoted(log.string());
-    if (std::system(command.c_str()) != 0)
+    SpawnOptions options;
+    options.stderr_file = log;
+    int status = 0;
+    try {
+        status = runProcess({"gnuplot", gp.string()}, options);
+    } catch (const RunError& e) {
+        throw RunError(std::string(e.what()) + " (is gnuplot-nox installed?)");
+    }
+    if (status != 0)
         throw RunError("gnuplot failed on " + gp.string() + " (see " + log.string() + "; is gnuplot-nox installed?)");
     std::ifstream in(svg);
     std::stringstream text;

@@ -15,15 +15,18 @@
 namespace vroc::harness::mpi {
 namespace {
 
-bool g_active = false;
 int g_rank = 0;
 int g_size = 1;
+
+#ifdef VROC_WITH_MPI
+bool g_active = false;
 
 bool launchedByMpirun() {
     for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
         if (std::getenv(v)) return true;
     return false;
 }
+#endif
 
 // Polls sleep this long: short next to a run (milliseconds to minutes), long enough that an idle
 // rank costs no CPU.

@@ -696,9 +696,13 @@ std::vector<Json> RunPool::run(const std::vector<PoolJob>& jobs, const Dependenc
     return out;
 }
 
-Json RunPool::executionJson() const {
-    return {{"jobs", options_.jobs}, {"ranks", mpi::size()}, {"mpi_library", mpi::libraryVersion()}, {"runs", runs_}, {"resumed", resumed_},
-            {"dispatch_s", dispatch_s_}};
+PoolExecution RunPool::execution() const {
+    return {options_.jobs, mpi::size(), mpi::libraryVersion(), runs_, resumed_, dispatch_s_};
+}
+
+Json executionJson(const PoolExecution& e) {
+    return {{"jobs", e.jobs}, {"ranks", e.ranks}, {"mpi_library", e.mpi_library}, {"runs", e.runs}, {"resumed", e.resumed},
+            {"dispatch_s", e.dispatch_s}};
 }
 
 }  // namespace vroc::harness

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include <chrono>
-#include <cmath>
+#include <algorithm>
 
 #include "vroc/core/errors.h"
+#include "vroc/core/frame_loop.h"
 #include "vroc/harness/run_trace.h"
 
 namespace vroc::harness {
@@ -20,15 +20,6 @@ std::vector<BodyState> initialStates(const Scene& scene) {
         out[i] = BodyState{b.pose, b.linear_velocity, b.angular_velocity};
     }
     return out;
-}
-
-std::int64_t framesFor(double duration, double dt) {
-    if (!(duration >= 0) || !(dt > 0) || !std::isfinite(duration) || !std::isfinite(dt))
-        throw InputError("duration and frame step must be finite, duration >= 0 and step > 0");
-    const double n = duration / dt;
-    const double nearest = std::round(n);
-    if (std::abs(n - nearest) <= 1e-9 * std::max(1.0, n)) return static_cast<std::int64_t>(nearest);
-    return static_cast<std::int64_t>(std::ceil(n));
 }
 
 namespace {
@@ -77,15 +68,15 @@ RunTrace runBackend(const BackendInfo& info, const Scene& scene, const Settings&
         trace.states.push_back(states);
     };
     record();
-    for (std::int64_t f = 0; f < options.frames; ++f) {
-        const auto start = std::chrono::steady_clock::now();
-        backend->stepFrame(options.frame_dt);
-        const auto stop = std::chrono::steady_clock::now();
-        trace.step_wall_s.push_back(std::chrono::duration<double>(stop - start).count());
-        for (const CollisionEvent& e : backend->takeEvents()) trace.events.push_back(e);
-        if (f + 1 == options.frames || (f + 1) % std::max<std::int64_t>(1, options.record_every) == 0) record();
-        if (options.progress) options.progress(f + 1, options.frames);
-    }
+    FrameHooks hooks;
+    hooks.after_frame = [&](std::int64_t frame, double step_wall_s, std::vector<CollisionEvent>& events) {
+        trace.step_wall_s.push_back(step_wall_s);
+        trace.events.insert(trace.events.end(), events.begin(), events.end());
+        if (frame == options.frames || frame % std::max<std::int64_t>(1, options.record_every) == 0) record();
+        if (options.progress) options.progress(frame, options.frames);
+        return true;
+    };
+    stepFrames(*backend, options.frames, options.frame_dt, hooks);
     trace.warnings = backend->warnings();
     trace.statistics = backend->statistics();
     return trace;

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "scheduling/collision_time_bound.h"
+#include "vroc/core/body_motion_checks.h"
 #include "vroc/core/errors.h"
 
 namespace vroc::native {
@@ -16,9 +17,7 @@ NativeBackend::NativeBackend(const Scene& scene, const NativeSettings& settings)
     if (!(scene.collision_distance > 0.0))
         throw InputError("scene '" + scene.name + "': collision_distance must be > 0 for the native backend");
     for (const Body& body : scene.bodies) {
-        if (body.isTracked() && !(body.pose.position.allFinite() && body.pose.orientation.coeffs().allFinite() &&
-                                  body.pose.orientation.norm() > 0.0 && body.linear_velocity.allFinite() &&
-                                  body.angular_velocity.allFinite()))
+        if (body.isTracked() && !hasFiniteMotion(body))
             throw InputError("scene '" + scene.name + "', tracked body '" + body.name +
                              "': expected a finite pose and finite velocities (its prescribed motion)");
         bodies_.push_back(RigidBody::fromScene(body));
@@ -144,7 +143,7 @@ double NativeBackend::internalStep(double t, double remaining, bool unbounded) {
     while (queue_.nextTime() <= t) due.push_back(queue_.pop()->pair);
     std::sort(due.begin(), due.end());
     due.erase(std::unique(due.begin(), due.end()), due.end());
-    stats_.queue_pops += static_cast<std::int64_t>(due.size());
+    stats_.flight_pair_queries += static_cast<std::int64_t>(due.size());
     stats_.broad_phase_pairs += static_cast<std::int64_t>(candidates_.size());
 
     // 2. Narrow phase of the due pairs; islands with a new contact or a tick due are solved.

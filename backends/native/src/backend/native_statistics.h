@@ -19,7 +19,7 @@ struct NativeStatistics {
     std::int64_t walk_steps = 0;             ///< summed over queries
     std::int64_t max_walk_steps = 0;
     std::int64_t step_solves = 0;            ///< contact-phase solves, one per island solved
-    std::int64_t queue_pops = 0;             ///< flight pairs queried (their key came, or a body changed)
+    std::int64_t flight_pair_queries = 0;    ///< flight pairs queried (their key came, or a body changed)
     std::int64_t collisions = 0;             ///< collision events
     std::int64_t contacts = 0;               ///< touching part pairs, summed over internal steps
     std::int64_t contact_points = 0;         ///< contact-phase points, summed over internal steps
@@ -44,7 +44,7 @@ struct NativeStatistics {
         s["walk_steps_mean"] = static_cast<double>(walk_steps) / queries;
         s["walk_steps_max"] = static_cast<double>(max_walk_steps);
         s["contact_solves"] = static_cast<double>(step_solves);
-        s["queue_pops"] = static_cast<double>(queue_pops);
+        s["flight_pair_queries"] = static_cast<double>(flight_pair_queries);
         s["collision_events"] = static_cast<double>(collisions);
         s["contacts"] = static_cast<double>(contacts);
         s["contact_points_solved"] = static_cast<double>(contact_points);

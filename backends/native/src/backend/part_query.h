@@ -4,7 +4,7 @@
 #pragma once
 
 #include "backend/body_shape.h"
-#include "narrowphase/proximity.h"
+#include "narrowphase/contact_patch.h"
 
 namespace vroc::native {
 

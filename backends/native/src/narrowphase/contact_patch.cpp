@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "geometry/convex_mesh.h"
-#include "narrowphase/proximity.h"
+#include "narrowphase/contact_patch.h"
 
 namespace vroc::native {
 namespace {

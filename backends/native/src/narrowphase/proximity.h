@@ -53,15 +53,4 @@ ProximityResult querySphereMesh(const Vec3& center, double radius,
 ProximityResult querySphereSphere(const Vec3& center_a, double radius_a,
                                   const Vec3& center_b, double radius_b);
 
-/// Contact region of a touching pair: a single point for vertex/edge contacts, the overlap
-/// polygon of two (nearly) parallel faces, or the clipped segment of an edge on a face.
-/// `tolerance` [m] decides "parallel" and "touching". Points are world, mid-way between surfaces.
-struct ContactPatch {
-    std::vector<Vec3> points;     ///< polygon (CCW about normal) or segment or single point
-    Vec3 centroid = Vec3::Zero(); ///< area centroid of the polygon (segment midpoint, the point)
-};
-ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b,
-                          const Pose& pose_b, const FeatureCache& cache,
-                          const ProximityResult& result, double tolerance);
-
 }  // namespace vroc::native

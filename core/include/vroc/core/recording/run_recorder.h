@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "vroc/core/backend.h"
+#include "vroc/core/frame_loop.h"
 #include "vroc/core/scene.h"
 #include "vroc/core/settings.h"
 #include "vroc/core/recording/run_record.h"
@@ -21,7 +22,7 @@ struct RunRequest {
     Settings settings;                           ///< resolved against backend->settings
     std::string scene_file;                      ///< for run.json
     double frame_dt = 0;                         ///< [s] > 0, finite
-    double duration = 0;                         ///< [s] > 0, finite
+    double duration = 0;                         ///< [s] > 0, finite; frameCount(duration, frame_dt) frames
     std::filesystem::path out_dir;
     std::string command_line;                    ///< for run.json
     /// Called after each frame with (frames done, total); returning false stops the run, which
@@ -38,11 +39,6 @@ struct RunRequest {
     /// for `vroc run --track` (tracked bodies take their device's pose). May be empty.
     std::function<void(Backend&, double)> before_frame;
 };
-
-/// Frames needed to cover `duration` with steps of `dt`: duration/dt rounded to the nearest integer
-/// when within 1e-9 relative of it (so 5 s at 1/60 s is 300), else rounded up. At least 1.
-/// Throws InputError unless both are finite and positive and the count is at most 1e9.
-std::int64_t frameCount(double duration, double dt);
 
 /// Validates the request (InputError), prepares the output directory (InputError if unwritable),
 /// creates the backend (its InputError passes through), steps and records. Failures while stepping

@@ -2,10 +2,14 @@
 // Where the recording writers put their text: a file being written atomically, or a string in tests.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
 namespace vroc::recording {
+
+/// Buffered writers hand text to their sink in blocks of about this size.
+inline constexpr std::size_t kFlushBytes = 1 << 16;
 
 class TextSink {
 public:

@@ -2,9 +2,10 @@
 // MP4 output: raw RGB frames piped into an ffmpeg subprocess (libx264, yuv420p).
 #pragma once
 
-#include <cstdio>
+#include <optional>
 #include <string>
 
+#include "vroc/core/subprocess.h"
 #include "vroc/render/image.h"
 
 namespace vroc::render {
@@ -12,21 +13,21 @@ namespace vroc::render {
 class VideoWriter {
 public:
     /// Starts `ffmpeg` writing `path` at `fps` frames per second for width x height frames
-    /// (both even, as yuv420p needs). Throws RunError if ffmpeg cannot start.
+    /// (both even, as yuv420p needs). Throws RunError if ffmpeg cannot start (not installed).
     VideoWriter(const std::string& path, int width, int height, double fps);
     ~VideoWriter();   ///< finishes if finish() was not called (errors ignored)
     VideoWriter(const VideoWriter&) = delete;
     VideoWriter& operator=(const VideoWriter&) = delete;
 
     void addFrame(const Image& image);   ///< throws RunError on a size mismatch or broken pipe
-    /// Closes the pipe and waits for ffmpeg; throws RunError if it failed.
+    /// Closes ffmpeg's input and waits for it; throws RunError if it failed.
     void finish();
 
 private:
     std::string path_;
     int width_;
     int height_;
-    std::FILE* pipe_ = nullptr;
+    std::optional<Subprocess> ffmpeg_;   ///< reads raw frames on its stdin; empty once finished
 };
 
 }  // namespace vroc::render

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Where plugins are found. A plugin is named by a path (anything containing '/') or by a name,
 // looked up as vroc-plugin-<name>.so in, in order: the directories of VROC_PLUGIN_PATH
-// (colon-separated), <directory of the running program>/../lib/vroc-plugins, and the build's
-// plugin directory (${CMAKE_BINARY_DIR}/lib/vroc-plugins).
+// (colon-separated), <directory of the running program>/../lib/vroc-plugins (the build tree),
+// <directory of the running program>/../<libdir>/vroc/plugins (an installed vroc), and, for
+// programs inside the build tree only, the build's plugin directory
+// (${CMAKE_BINARY_DIR}/lib/vroc-plugins).
 #pragma once
 
 #include <string>

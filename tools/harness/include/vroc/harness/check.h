@@ -1,16 +1,20 @@
 // SPDX-License-Identifier: MIT
-// `vroc check`: runs the analytic suite on each backend, prints the check x backend table and
-// writes metrics.json and report.html. Exit code 1 when a check required for "native" fails on
-// the backend named native.
+// `vroc check`: runs the analytic suite on each backend and returns a CheckSuiteResult; the
+// metrics document (check_document.h) and the printed table are written from it. Exit code 1
+// when a check required for "native" fails on the backend named native.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "vroc/harness/backend_selection.h"
+#include "vroc/harness/check_suite.h"
 #include "vroc/harness/metrics_document.h"
 #include "vroc/harness/run_pool.h"
+#include "vroc/harness/scene_support.h"
 
 namespace vroc::harness {
 
@@ -25,21 +29,42 @@ struct CheckOptions {
     std::filesystem::path scenes_dir = "scenes/stress";   ///< where the stress scenes are
 };
 
-/// Runs the suite, one pool job per (scenario, backend); the document's results.checks lists every
-/// metric with per-backend {measured, pass} and results.required_failures_native counts the
-/// failures that set exit 1.
-Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& options, RunPool& pool);
+/// One metric measured on one backend.
+struct CheckCell {
+    double measured = NAN;         ///< in the metric's units; NaN: not run, or the run went non-finite
+    std::optional<bool> pass;      ///< empty: reported, not judged (or not run)
+    SceneSupport support;          ///< Unsupported: the scenario was not run on this backend
+};
+
+/// One metric of the suite and its cell per backend (CheckSuiteResult::backends order).
+struct CheckRow {
+    std::string scenario;          ///< CheckScenario::id
+    CheckMetric metric;            ///< its measure is not called again
+    std::vector<CheckCell> cells;
+};
+
+struct CheckSuiteResult {
+    std::vector<SelectedBackend> backends;
+    bool long_set = false;
+    bool stress = false;                       ///< the stress section ran (asked for, or implied by --only)
+    std::filesystem::path scenes_dir;          ///< of the stress scenes, when stress
+    std::size_t scenario_count = 0;
+    std::vector<CheckRow> rows;                ///< every metric, in suite order
+    std::vector<double> wall_time_s;           ///< [s] per backend: the sum of its runs' wall times
+    int required_failures_native = 0;          ///< required metrics failed on the backend named "native"
+    PoolExecution execution;
+
+    /// 1 if a required-for-native check failed on native, else 0.
+    int exitCode() const { return required_failures_native > 0 ? 1 : 0; }
+};
+
+/// Runs the suite, one pool job per (scenario, backend).
+CheckSuiteResult runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& options, RunPool& pool);
 
 /// The same, one run after another in this process, writing nothing.
-Json runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& options);
+CheckSuiteResult runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& options);
 
 /// What the suite's runs depend on, for RunPool (--resume).
 Json checkPlan(const std::vector<SelectedBackend>& backends, const CheckOptions& options);
-
-/// The plain-text table printed on stdout.
-std::string checkTableText(const Json& doc);
-
-/// Exit code for a finished suite: 1 if a required-for-native check failed on native, else 0.
-int checkExitCode(const Json& doc);
 
 }  // namespace vroc::harness

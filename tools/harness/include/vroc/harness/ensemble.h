@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "vroc/harness/backend_selection.h"
 #include "vroc/harness/metrics_document.h"
 #include "vroc/harness/run_pool.h"
+#include "vroc/harness/two_sample_tests.h"
 
 namespace vroc::harness {
 
@@ -48,10 +50,54 @@ std::vector<BodyState> ensembleMemberStates(const Scene& scene, const Perturbati
 /// What the members' runs depend on, for RunPool (--resume).
 Json ensemblePlan(const Scene& scene, const std::vector<SelectedBackend>& backends, const EnsembleOptions& options);
 
-/// Runs every (backend, member) over `pool` and returns the metrics document.
-Json runEnsemble(const Scene& scene, const std::vector<SelectedBackend>& backends, const EnsembleOptions& options, RunPool& pool);
+/// An observable that stays meaningful in chaos.
+struct EnsembleObservable {
+    std::string id;       ///< "rest_positions", "first_impact_time:<body>", ...
+    std::string title;
+    std::string units;
+};
 
-/// One line per backend pair: which observables distinguish them and which do not.
-std::string ensembleVerdictText(const Json& doc);
+/// One member run on one backend.
+struct EnsembleMember {
+    int member = 0;
+    bool finite = true;
+    std::map<std::string, std::vector<double>> observables;   ///< by id; NaN where not finite
+    std::vector<double> t;                ///< [s] sampled frames (about series_points)
+    std::vector<double> kinetic_energy;   ///< [J] at those frames
+    std::vector<double> mean_height;      ///< [m] mean z of the virtual bodies' centres of mass
+    std::string state_hash;               ///< of the last frame
+    double wall_s = 0;                    ///< [s] of its steps
+};
+
+/// One two-sample test: observable x backend pair.
+struct EnsembleTest {
+    std::string observable;
+    std::string a, b;                     ///< backend names
+    std::size_t members_a = 0, members_b = 0;   ///< with a finite value
+    PermutationTest test;                 ///< energy distance [units] and permutation p-value
+    double wasserstein1 = NAN;            ///< [units] scalar observables only
+    double p_holm = NAN;                  ///< Holm-adjusted over the whole family
+    bool distinguishable = false;         ///< p_holm < alpha
+};
+
+struct EnsembleResult {
+    Scene scene;
+    EnsembleOptions options;
+    std::vector<SelectedBackend> backends;   ///< those that can represent the scene
+    Json support;                            ///< per requested backend, as representableBackends gives it
+    std::vector<EnsembleObservable> observables;
+    std::vector<std::vector<EnsembleMember>> members;   ///< [backend][member]
+    int permutations = 0;                    ///< per test
+    std::vector<EnsembleTest> tests;
+    PoolExecution execution;
+};
+
+/// Runs every (backend, member) over `pool` and tests every observable between every pair.
+EnsembleResult runEnsemble(const Scene& scene, const std::vector<SelectedBackend>& backends, const EnsembleOptions& options,
+                           RunPool& pool);
+
+/// The members' values of one observable, one Sample each (a missing or non-finite value drops
+/// that member).
+std::vector<Sample> ensembleSamples(const std::vector<EnsembleMember>& members, const std::string& id);
 
 }  // namespace vroc::harness

@@ -61,6 +61,23 @@ struct PoolOptions {
     std::function<void(const PoolProgress&)> progress;   ///< called on rank 0 as runs finish; may be empty
 };
 
+/// How a command's runs were executed, for its report.
+struct PoolExecution {
+    int jobs = 1;               ///< local runs at once per rank
+    int ranks = 1;              ///< MPI ranks
+    std::string mpi_library;    ///< "Open MPI v4.1.4, ..." or "none"
+    int runs = 0;               ///< runs executed or resumed, over every phase
+    int resumed = 0;            ///< loaded from a previous attempt (--resume)
+    double dispatch_s = 0;      ///< [s] CPU time rank 0's dispatcher spent handing runs out, storing
+                                ///< their results and polling (0 when the runs went in this process)
+
+    /// Runs that may have shared the machine with each other (timings are then not alone).
+    int atOnce() const { return jobs * ranks; }
+};
+
+/// {jobs, ranks, mpi_library, runs, resumed, dispatch_s}: the "execution" member of metrics.json.
+Json executionJson(const PoolExecution& execution);
+
 /// "ref-native-dt=1/960" -> "ref-native-dt_1_960": letters, digits and . _ = - kept.
 std::string poolJobId(const std::string& text);
 
@@ -80,10 +97,8 @@ public:
     /// have finished; the finished ones stay on disk for --resume.
     std::vector<Json> run(const std::vector<PoolJob>& jobs, const DependencyHook& on_dependency = {});
 
-    /// {jobs, ranks, mpi_library, runs, resumed, dispatch_s} for metrics.json: how the runs were
-    /// executed; dispatch_s [s] is the CPU time rank 0's dispatcher spent handing runs out, storing
-    /// their results and polling (0 when the runs went in this process).
-    Json executionJson() const;
+    /// How the runs were executed so far (over every phase).
+    PoolExecution execution() const;
 
 private:
     PoolOptions options_;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "vroc/core/backend.h"
+#include "vroc/core/frame_loop.h"
 #include "vroc/core/scene.h"
 #include "vroc/core/settings.h"
 #include "vroc/harness/invariants.h"
@@ -35,7 +36,7 @@ struct RunTrace {
 
 struct RunOptions {
     double frame_dt = 0;        ///< [s] > 0
-    std::int64_t frames = 0;    ///< frames to step (>= 0)
+    std::int64_t frames = 0;    ///< frames to step (>= 0; frameCount for a duration)
     /// If set: every virtual body starts from these states (indexed like Scene::bodies), applied
     /// through Backend::setBodyState on the fresh backend (re-anchoring, twin perturbation).
     std::optional<std::vector<BodyState>> initial_states;
@@ -53,7 +54,5 @@ RunTrace runBackend(const BackendInfo& backend, const Scene& scene, const Settin
 /// The scene's initial states, indexed like Scene::bodies.
 std::vector<BodyState> initialStates(const Scene& scene);
 
-/// Frames covering `duration` with steps of `dt` (rounded to nearest when within 1e-9, else up).
-std::int64_t framesFor(double duration, double dt);
 
 }  // namespace vroc::harness

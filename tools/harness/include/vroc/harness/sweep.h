@@ -5,6 +5,7 @@
 // second; the Pareto front; the robustness limit; and model detail against a target error.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 #include "vroc/harness/detail_levels.h"
 #include "vroc/harness/metrics_document.h"
 #include "vroc/harness/run_pool.h"
+#include "vroc/harness/sweep_curves.h"
 
 namespace vroc::harness {
 
@@ -42,6 +44,9 @@ struct SweepScene {
 /// Loads a scene file or builds a check scenario; throws InputError.
 SweepScene loadSweepScene(const std::string& source);
 
+/// A frame step [s] as its rate: "1/60".
+std::string frameStepName(double dt);
+
 /// The default steps: 1/60, 1/120, ..., 1/960 s.
 std::vector<double> defaultSweepSteps();
 
@@ -49,8 +54,69 @@ std::vector<double> defaultSweepSteps();
 /// --resume reuses only runs of the same sweep.
 Json sweepPlan(const SweepScene& scene, const std::vector<SelectedBackend>& backends, const SweepOptions& options);
 
-/// Runs the sweep over `pool` (reference runs first, then every step and detail run) and returns
-/// the metrics document; only the pool writes files (its finished runs).
-Json runSweep(const SweepScene& scene, const std::vector<SelectedBackend>& backends, const SweepOptions& options, RunPool& pool);
+/// One (curve, frame step) run.
+struct SweepStep {
+    double dt = 0;                        ///< [s] frame step
+    bool measured = false;                ///< false: a robustness-only step (larger than the swept ones)
+    double cost = NAN;                    ///< [s wall per s simulated] (measured steps)
+    double window_error = NAN;            ///< [m] mean over the re-anchored windows; NaN: none, or non-finite
+    double closed_form_error = NAN;       ///< |measured - closed form| in the metric's units; NaN: none
+    double step_p50_us = NAN;             ///< [µs] median step wall time
+    bool robust = false;                  ///< completed without NaN, tunnelling, blow-up or collapse
+    std::string failure;                  ///< why not robust
+    std::string state_hash;               ///< of the last frame
+};
+
+/// One (curve, model detail level) run at the largest step.
+struct SweepDetail {
+    std::string level;                    ///< DetailLevel::name
+    int faces = 0;                        ///< of the virtual bodies at this level
+    double cost = NAN;                    ///< [s wall per s simulated]
+    double window_error = NAN;            ///< [m] against the full-detail reference
+    bool meets_target = false;            ///< window_error <= SweepOptions::target
+    std::string state_hash;
+};
+
+struct SweepCurveResult {
+    SweepCurve curve;                     ///< backend, settings and label
+    std::vector<SweepStep> steps;         ///< robustness steps then swept steps, largest first
+    std::optional<double> convergence_order;     ///< p of error ~ dt^p over the measured steps
+    std::optional<double> robustness_limit_dt;   ///< [s] largest step from which every smaller one is robust
+    std::vector<SweepDetail> details;     ///< in SweepOptions::details order
+    std::optional<std::string> cheapest_meeting_target;   ///< detail level
+};
+
+/// A measured (curve, step) point of the speed-accuracy plane.
+struct SweepPoint {
+    std::size_t curve = 0;                ///< index into SweepResult::curves
+    std::size_t step = 0;                 ///< index into that curve's steps
+    bool on_pareto_front = false;
+};
+
+struct SweepResult {
+    std::string source;                   ///< the scene as given (file or check:<id>)
+    Scene scene;
+    std::vector<SelectedBackend> backends;   ///< those that can represent the scene
+    Json support;                         ///< per requested backend, as representableBackends gives it
+    std::vector<double> dts;              ///< [s] swept steps, largest first
+    std::vector<double> robustness_dts;   ///< [s] every step tried for the robustness limit, largest first
+    double reference_dt = 0;              ///< [s]
+    double duration = 0;                  ///< [s] of each run
+    std::size_t windows = 0;              ///< re-anchored windows used
+    double window = 0;                    ///< [s] their length
+    std::optional<CheckMetric> closed_form;
+    std::optional<double> target;         ///< [m]
+    std::vector<std::string> vary;
+    bool detail_sweep = false;            ///< model detail levels were swept
+    std::vector<SweepCurveResult> curves;
+    std::vector<SweepPoint> points;       ///< every measured step, curve by curve
+    PoolExecution execution;
+
+    const SweepStep& stepOf(const SweepPoint& p) const { return curves[p.curve].steps[p.step]; }
+};
+
+/// Runs the sweep over `pool` (reference runs first, then every step and detail run); only the
+/// pool writes files (its finished runs). The metrics document is written by sweepDocument.
+SweepResult runSweep(const SweepScene& scene, const std::vector<SelectedBackend>& backends, const SweepOptions& options, RunPool& pool);
 
 }  // namespace vroc::harness

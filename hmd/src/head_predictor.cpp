@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The trivial predictors: hold the newest measurement, or extrapolate its velocity.
+// makePredictor and the two simple predictors: hold the newest measurement, or extrapolate its
+// velocity (the Kalman predictor is kalman_predictor.cpp).
 #include "vroc/hmd/head_predictor.h"
 #include "vroc/core/rotation_vector.h"
 #include "kalman_predictor.h"
