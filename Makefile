@@ -45,7 +45,7 @@ test: build
 
 # The default suite built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
 # directory (nothing shared with $(BUILD_DIR) that could hide a finding); any finding fails.
-# -O1 with line tables only: a third of the -O2 -g build time, and reports still name file:line.
+# -O1 with line tables only (cheaper to build than -O2 -g; reports still name file:line).
 # Benchmarks are not built (no test runs them).
 # Third-party leaks are suppressed in tests/sanitizers/lsan.supp, each with why. The two tests
 # that start `mpirun` are left out: Open MPI leaks inside MPI_Init from MCA components it has

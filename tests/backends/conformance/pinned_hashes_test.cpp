@@ -85,9 +85,9 @@ nlohmann::ordered_json pinDocument(const std::map<std::string, std::string>& has
 }
 
 TEST(PinnedHashes, EveryShippedSceneOnEveryBackendKeepsItsStateHash) {
-    const std::map<std::string, std::string> now = currentHashes();
     const char* mode = std::getenv("VROC_PIN_HASHES");
     if (mode && std::string(mode) == "write") {
+        const std::map<std::string, std::string> now = currentHashes();
         std::ofstream(kPinFile) << pinDocument(now).dump(2) << "\n";
         GTEST_SKIP() << "wrote " << now.size() << " hashes to " << kPinFile;
     }
@@ -103,6 +103,8 @@ TEST(PinnedHashes, EveryShippedSceneOnEveryBackendKeepsItsStateHash) {
                          << mine << "': bit patterns are not comparable";
     }
     ASSERT_EQ(pinned.at("frames").get<int>(), kFrames);
+    // Stepped only now: a build the pins do not apply to (a sanitizer build) skips at once.
+    const std::map<std::string, std::string> now = currentHashes();
     const auto was = pinned.at("hashes").get<std::map<std::string, std::string>>();
     std::vector<std::string> changed;
     for (const auto& [key, hash] : now) {
