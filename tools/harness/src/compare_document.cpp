@@ -53,13 +53,17 @@ Json backendJson(const CompareBackendSummary& s, const BackendRuns& r) {
             {"statistics", stats}};
 }
 
+double maxDivergence(const ComparePair& p) {
+    const auto& d = p.divergence.distance;
+    return *std::max_element(d.begin(), d.end());
+}
+
 Json pairJson(const CompareResult& c, const ComparePair& p) {
     Json per_body = Json::object();
     const auto vb = virtualBodyIndices(c.scene);
     for (std::size_t v = 0; v < vb.size(); ++v) per_body[c.scene.bodies[static_cast<std::size_t>(vb[v])].name] = p.divergence.per_body_max[v];
-    const auto& d = p.divergence.distance;
-    return {{"a", nameOf(c, 0)}, {"b", nameOf(c, p.backend)}, {"max_divergence_m", *std::max_element(d.begin(), d.end())},
-            {"final_divergence_m", d.back()}, {"per_body_max_m", per_body},
+    return {{"a", nameOf(c, 0)}, {"b", nameOf(c, p.backend)}, {"max_divergence_m", maxDivergence(p)},
+            {"final_divergence_m", p.divergence.distance.back()}, {"per_body_max_m", per_body},
             {"first_significant_s", optionalNumber(p.significance.first_time)}, {"significant_fraction", p.significance.fraction}};
 }
 
@@ -114,9 +118,8 @@ Json summaryTable(const CompareResult& c) {
 Json pairsTable(const CompareResult& c) {
     std::vector<std::vector<Json>> rows;
     for (const ComparePair& p : c.pairs) {
-        const Json j = pairJson(c, p);
-        rows.push_back({nameOf(c, 0) + " vs " + nameOf(c, p.backend), j["max_divergence_m"], j["final_divergence_m"],
-                        j["first_significant_s"], p.significance.fraction});
+        rows.push_back({nameOf(c, 0) + " vs " + nameOf(c, p.backend), maxDivergence(p), p.divergence.distance.back(),
+                        optionalNumber(p.significance.first_time), p.significance.fraction});
     }
     return tableJson("pairs", "Cross-backend divergence (counts only above both twin spreads)",
                      {"pair", "max [m]", "final [m]", "first significant [s]", "significant fraction [-]"}, rows);
