@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 PACKAGES := cmake ninja-build g++ make pkg-config git ca-certificates \
   libeigen3-dev libbullet-dev libode-dev libmujoco-dev libccd-dev libassimp-dev libqhull-dev \
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libfmt-dev libopenmpi-dev openmpi-bin \
-  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium libsndfile1-dev libspnav-dev libx11-dev
+  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium libsndfile1-dev libspnav-dev libx11-dev ccache
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps configure build demo test test-long test-sanitize bench bench-dense bench-scale clean
@@ -37,7 +37,11 @@ PREFIX ?= /usr/local
 install: build
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
-demo: build
+# Only what scripts/demo.sh runs: the `vroc` program and the built-in device plugins it loads (no
+# tests, no benchmarks); `make test` builds the rest.
+DEMO_TARGETS := vroc vroc_builtin_plugins
+demo: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target $(DEMO_TARGETS)
 	@scripts/demo.sh $(BUILD_DIR)
 
 test: build

@@ -1,11 +1,11 @@
 # `cmake --install build --prefix P` (issue 13): the libraries with their public headers, the
 # `vroc` program, the built-in plugins where `vroc` finds them, the shipped scenes, a CMake package
-# (find_package(vroc): vroc::core, vroc::harness, vroc::plugin_sdk, ...) and vroc-plugin.pc for
-# plugins written in C. Layout (GNUInstallDirs):
+# in components (find_package(vroc COMPONENTS ...): vroc::core, vroc::harness, vroc::plugin_sdk, ...;
+# cmake/vrocConfig.cmake.in) and vroc-plugin.pc for plugins written in C. Layout (GNUInstallDirs):
 #   bin/vroc
 #   include/vroc/{core,harness,plugin,plugin_sdk,hmd,native,bullet,ode,mujoco}/
 #   <libdir>/libvroc_*.a, <libdir>/vroc/plugins/vroc-plugin-*.so
-#   <libdir>/cmake/vroc/{vrocConfig,vrocConfigVersion,vrocTargets}.cmake
+#   <libdir>/cmake/vroc/{vrocConfig,vrocConfigVersion}.cmake, vroc-<component>-targets*.cmake
 #   <libdir>/pkgconfig/vroc-plugin.pc
 #   share/vroc/scenes/, share/vroc/plugin-exports.map
 # Everything installed is relocatable: the package and the .pc file find the prefix from their
@@ -15,20 +15,31 @@ include(CMakePackageConfigHelpers)
 set(VROC_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/vroc)
 set(VROC_DATA_INSTALL_DIR ${CMAKE_INSTALL_DATADIR}/vroc)
 
-# Libraries of the package, by their names in it (vroc::<name>). The backends come along so that a
-# downstream program can compare its own backend against them; internals (native's src/, the
-# harness's src/) stay out.
+# Libraries of the package, by their names in it (vroc::<name>), in components: each component is
+# an export set of its own, <libdir>/cmake/vroc/vroc-<component>-targets.cmake, which
+# vrocConfig.cmake loads only when the component is asked for, after finding the packages its
+# libraries need (so vroc::core needs only core's own dependencies, and MPI is found only for the
+# harness). The backends come along so that a downstream program can compare its own backend against
+# them; internals (native's src/, the harness's src/) stay out.
 set_target_properties(vroc_qhull PROPERTIES EXPORT_NAME qhull)   # core's private link to libqhull_r
-install(TARGETS vroc_core vroc_qhull vroc_harness vroc_hmd
-                vroc_plugin_abi vroc_plugin_support vroc_plugins
-                vroc_backend_native vroc_backend_bullet vroc_backend_ode vroc_backend_mujoco
-                vroc
-        EXPORT vrocTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
-        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(EXPORT vrocTargets NAMESPACE vroc:: DESTINATION ${VROC_CMAKE_INSTALL_DIR})
+function(vroc_install_component component)
+  install(TARGETS ${ARGN}
+          EXPORT vroc-${component}-targets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT vroc-${component}-targets NAMESPACE vroc:: DESTINATION ${VROC_CMAKE_INSTALL_DIR})
+endfunction()
+vroc_install_component(core vroc_core vroc_qhull)
+vroc_install_component(plugin_sdk vroc_plugin_abi vroc_plugin_support)
+vroc_install_component(plugins vroc_plugins)
+vroc_install_component(hmd vroc_hmd)
+vroc_install_component(harness vroc_harness)
+foreach(backend native bullet ode mujoco)
+  vroc_install_component(backend_${backend} vroc_backend_${backend})
+endforeach()
+vroc_install_component(program vroc)
 
 # Public headers: each library's include/ tree. The plugin SDK's headers live flat in
 # plugins/support/ and install as include/vroc/plugin_sdk/.

@@ -9,8 +9,11 @@
 #      (first bounce of ball_drop at the closed-form time sqrt(2 h / g));
 #   3. a device plugin in C, compiled with `cc $(pkg-config --cflags vroc-plugin) -shared`, is loaded
 #      by the installed `vroc` and drives a tracked body: trajectory.csv shows the plugin's pose;
-#   4. the downstream CMake project (find_package(vroc)) builds, its program passes its own checks
-#      (tests/install/downstream/main.cpp) and its C++ SDK plugin loads in the installed `vroc`.
+#   4. two C++-only downstream CMake projects: downstream/ (find_package(vroc), vroc::core alone, no
+#      MPI looked for) builds, its program passes its own checks (downstream/main.cpp) and its C++
+#      SDK plugin loads in the installed `vroc`; downstream_harness/ (COMPONENTS harness
+#      backend_native) compares its own backend with native through the harness and compiles every
+#      installed header.
 # Usage: install_test.sh BUILD_DIR SOURCE_DIR
 #   (JOBS=n for the downstream build, default 2; CMAKE=path of cmake, default the one on PATH)
 set -euo pipefail
@@ -51,7 +54,8 @@ libdir=${libdir#"$p"/}
 for f in bin/vroc include/vroc/core/backend.h include/vroc/core/backend_registry.h include/vroc/harness/compare.h \
          include/vroc/plugin/vroc_device_plugin.h include/vroc/plugin_sdk/plugin_sdk.h include/vroc/native/native_backend.h \
          "$libdir/libvroc_core.a" "$libdir/libvroc_harness.a" "$libdir/libvroc_plugin_support.a" \
-         "$libdir/cmake/vroc/vrocConfigVersion.cmake" "$libdir/cmake/vroc/vrocTargets.cmake" \
+         "$libdir/cmake/vroc/vrocConfigVersion.cmake" "$libdir/cmake/vroc/vroc-core-targets.cmake" \
+         "$libdir/cmake/vroc/vroc-harness-targets.cmake" "$libdir/cmake/vroc/vroc-backend_native-targets.cmake" \
          "$libdir/pkgconfig/vroc-plugin.pc" "$libdir/vroc/plugins/vroc-plugin-analytic.so" \
          share/vroc/scenes/ball_drop.json share/vroc/scenes/tracked_notepad.json share/vroc/plugin-exports.map; do
   [ -e "$p/$f" ] || fail "not installed: $f"
@@ -122,17 +126,32 @@ awk -F, 'function sq(v) { return v * v }
   fail "vroc run --track notepad=hold: the notepad's poses are not the plugin's (see $work/hold/trajectory.csv)"
 ok "C plugin built with pkg-config vroc-plugin: loaded by the installed vroc, drives the tracked notepad"
 
-# ---- 4. the downstream CMake project --------------------------------------------------------------
+# ---- 4. the downstream CMake projects ------------------------------------------------------------
+# Both are C++ only (project(... CXX)): the package must not need the C language.
 generator=()
 command -v ninja > /dev/null && generator=(-G Ninja)
+# 4a. find_package(vroc) without components, linking vroc::core alone: no MPI, no reference engines
+#     (downstream/CMakeLists.txt fails its configure if any was looked for).
 run "$cmake" -S "$source/tests/install/downstream" -B "$work/downstream" "${generator[@]}" \
   -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=$p"
 expect_in_output "vroc 0.1.0 from $p/$libdir/cmake/vroc" "downstream configure"
+if grep -q "Found MPI" "$work/out"; then cat "$work/out" >&2; fail "downstream configure (vroc::core only) mentions MPI"; fi
 run "$cmake" --build "$work/downstream" -j "$jobs"
 run "$work/downstream/vroc_downstream"
 cat "$work/out"
-expect_in_output "downstream: all checks passed" "vroc_downstream"
+expect_in_output "downstream (core): all checks passed" "vroc_downstream"
 run "$vroc" plugins --plugin "$work/downstream/vroc-plugin-hover.so"
 expect_in_output "hover  1.0.0  (ABI 2)" "vroc plugins --plugin vroc-plugin-hover.so"
-ok "downstream project: find_package(vroc), own backend compared with native, C++ SDK plugin loads"
+ok "C++-only downstream project: find_package(vroc) links vroc::core alone (no MPI), C++ SDK plugin loads"
+
+# 4b. find_package(vroc COMPONENTS harness backend_native): the harness compares the downstream
+#     backend with native; MPI is found for C++ only; every installed header compiles.
+run "$cmake" -S "$source/tests/install/downstream_harness" -B "$work/downstream_harness" "${generator[@]}" \
+  -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=$p"
+expect_in_output "vroc 0.1.0 from $p/$libdir/cmake/vroc: harness, backend_native" "downstream_harness configure"
+run "$cmake" --build "$work/downstream_harness" -j "$jobs"
+run "$work/downstream_harness/vroc_downstream_harness"
+cat "$work/out"
+expect_in_output "downstream (harness): all checks passed" "vroc_downstream_harness"
+ok "C++-only downstream project with COMPONENTS harness: own backend compared with native, all headers compile"
 echo "install test: all passed"

@@ -25,6 +25,7 @@ std::string socketPath(const std::string& tag) {
     return ::testing::TempDir() + "vroc-spnav-" + std::to_string(getpid()) + "-" + tag + ".sock";
 }
 
+// Polls until `done` or about ten seconds pass (the machine may be busy).
 template <class F>
 bool waitFor(F&& done) {
     for (int i = 0; i < 5000; ++i) {
@@ -96,6 +97,10 @@ TEST_F(SpacenavPlugin, ReportsAxesButtonsAndTheIntegratedPoseOfTheEventsSent) {
     at(7.0, [&] { daemon.sendMotion({0, 0, -350, 0, 0, -350}); }, 1);  // back, and roll
     at(8.0, [&] { daemon.disconnect(); }, 1);  // the daemon goes away: the plugin releases everything
     ASSERT_TRUE(waitFor([&] { return !device->pose(0, 9 * kSecond).sample.has(VROC_POSE_POSITION_TRACKED); }));
+    // The reader thread logs the close just after it marks the pose untracked, outside the lock the
+    // pose is read under: wait for the line (bounded) before counting it exactly once below.
+    ASSERT_TRUE(waitFor([&] { return capture_->count("closed the connection") > 0; }))
+        << "no 'closed the connection' logged within 10 s of the pose going untracked";
 
     const double r = kPi / 2;  // [rad/s] at full deflection
     const std::vector<Segment> segments = {
