@@ -66,6 +66,9 @@ STRESS = os.path.join(ROOT, "scenes", "stress")
 # label -> (backend, --set assignments, text)
 CONFIGS = {
     "native": ("native", ["native.threads=1"], "native (threads=1)"),
+    # Issue 22's experimental regime (docs/native-dynamics.md, "Two regimes"), beside the default.
+    "native-spec": ("native", ["native.threads=1", "native.touching=speculative"],
+                    "native (threads=1, touching=speculative)"),
     "bullet": ("bullet", ["bullet.substeps=1"], "bullet (substeps=1)"),
     "bullet4": ("bullet", ["bullet.substeps=4"], "bullet (substeps=4)"),
     "bullet16": ("bullet", ["bullet.substeps=16"], "bullet (substeps=16)"),

@@ -121,6 +121,7 @@ void NativeBackend::startDrift(int body, const BodyImpulse& imp, double t, doubl
     drift_torque_[i] = imp.angular / h;
     valid_at_[i] = t;
     drift_until_[i] = t + h;
+    held_[i] = 1;
     bumpVersion(body);
     recoverIfNonFinite(body, saved);
 }

@@ -7,6 +7,7 @@
 
 #include "backend/native_backend.h"
 #include "dynamics/newton_coulomb.h"
+#include "dynamics/patch_impulse.h"
 #include "dynamics/vroc1995_impulse.h"
 
 namespace vroc::native {
@@ -15,6 +16,8 @@ namespace {
 // A point of a new manifold takes the warm-start impulse of a cached point closer than this
 // fraction of the smaller body's outer radius (in A's frame).
 constexpr double kMatchFraction = 0.05;
+// [m/s] approach speed below which a touching point is resting, not colliding (manifoldCollision).
+constexpr double kRestingNoise = 1e-4;
 
 // One island's contact phase, computed on local copies (so islands can run on any worker).
 struct IslandSolve {
@@ -112,14 +115,14 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         }
     }
     stats_.contacts += static_cast<std::int64_t>(manifolds.size());
+    for (const ContactManifold& m : manifolds)
+        stats_.speculative_points += std::count_if(m.point_gap.begin(), m.point_gap.end(), [cd](double g) { return !(g < cd); });
     // A contact that persists from the last solve and approaches slower than gravity closes in one
     // tick is resting, not colliding: its approach is stopped with e = 0, which keeps piles from
     // micro-bouncing; impacts (new contacts, or faster) keep their restitution.
     // (Held: its dynamic bodies drifted with the last solve up to now; a ball bouncing freely in
     // the window was not held, and its bounces keep their restitution.)
-    auto held = [&](int body) {
-        return infinite_mass_[static_cast<std::size_t>(body)] || drift_until_[static_cast<std::size_t>(body)] >= t;
-    };
+    auto held = [&](int body) { return heldAt(body, t); };
     std::vector<std::uint8_t> resting(manifolds.size(), 0);
     for (std::size_t m = 0; m < manifolds.size(); ++m)
         resting[m] = pairs_[static_cast<std::size_t>(manifolds[m].pair)].touching && held(manifolds[m].body_a) &&
@@ -152,6 +155,12 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // not from the penetration query, and the band [0, cd/4] absorbs a resting pile's jitter.
     solver.correction_floor = -0.01 * cd;
     solver.correction_target = 0.25 * cd;
+    // Speculative points (beyond the window) may close to half the collision distance: where the
+    // scenes place resting bodies, inside the window, so they are held from then on.
+    if (settings_.touching == TouchingRegime::Speculative) {
+        solver.speculative_from = cd;
+        solver.speculative_target = 0.5 * cd;
+    }
     const double resting_speed = scene_.gravity.norm() * h;
     auto solveOne = [&](IslandSolve& is, const ContactSolverSettings& settings) {
         is.local.reserve(is.bodies.size());
@@ -167,7 +176,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             is.solved.push_back(std::move(lm));
             local_resting.push_back(resting[static_cast<std::size_t>(m)]);
         }
-        is.collision = collisionPhase(is.local, is.solved, local_resting, resting_speed);
+        is.collision = collisionPhase(is.local, is.solved, local_resting, resting_speed, h);
         is.report = solveContactPhase(is.local, is.solved, h, scene_.gravity, settings, is.impulses);
     };
     // A large island is solved alone, its sweeps shared by all workers (colour groups, see
@@ -255,7 +264,8 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
 }
 
 CollisionPhaseReport NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                                                   const std::vector<std::uint8_t>& resting, double resting_speed) const {
+                                                   const std::vector<std::uint8_t>& resting, double resting_speed,
+                                                   double tick) const {
     CollisionPhaseReport report;
     report.impulsed.assign(bodies.size(), 0);
     for (int sweep = 0; sweep < settings_.collision_iterations; ++sweep) {
@@ -264,6 +274,11 @@ CollisionPhaseReport NativeBackend::collisionPhase(std::vector<RigidBody>& bodie
             ContactManifold& m = manifolds[k];
             RigidBody& a = bodies[static_cast<std::size_t>(m.body_a)];
             RigidBody& b = bodies[static_cast<std::size_t>(m.body_b)];
+            if (settings_.response == ResponseModel::NewtonCoulomb) {
+                any = manifoldCollision(a, b, m, resting[k] != 0, resting_speed, tick, report) || any;
+                continue;
+            }
+            if (!(m.distance < scene_.collision_distance)) continue;   // speculative: not the 1995 model's
             const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
             const double un = u.dot(m.normal);
             if (!(un < 0.0)) continue;
@@ -296,12 +311,76 @@ CollisionPhaseReport NativeBackend::collisionPhase(std::vector<RigidBody>& bodie
     return report;
 }
 
+bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
+                                   double tick, CollisionPhaseReport& report) const {
+    // The points that touch now, and the speculative ones that reach the speculative target within
+    // the tick at their approach speed: their impact is met now, up to a/|u| early (a the gap to
+    // close), rather than leaving the contact phase to stop them (the drift moves a body with the
+    // mean of its start and end velocities, so a fast point stopped at the tick's end still sinks
+    // by |u| h / 2). Two or more make a patch.
+    const double cd = scene_.collision_distance;
+    const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
+    auto approach = [&](const Vec3& p) { return -((b.velocity + wb.cross(p - b.com)) - (a.velocity + wa.cross(p - a.com))).dot(m.normal); };
+    std::vector<Vec3> points;
+    std::vector<double> restitution;
+    double fastest = 0.0;   // [m/s] largest approach speed of a selected point
+    for (std::size_t i = 0; i < m.points.size(); ++i) {
+        const double in = approach(m.points[i]);
+        if (i < m.point_gap.size() && !(m.point_gap[i] < cd) && !(in * tick >= m.point_gap[i] - 0.5 * cd)) continue;
+        const bool plastic = in < settings_.restitution_threshold || (resting && in <= resting_speed);
+        points.push_back(m.points[i]);
+        restitution.push_back(plastic ? 0.0 : m.restitution);
+        fastest = std::max(fastest, in);
+    }
+    // A patch whose points approach slower than this is at rest up to rounding and the drift's
+    // second-order terms: the contact phase holds it (it sinks by at most kRestingNoise h / 2).
+    if (points.empty() || !(fastest > kRestingNoise)) return false;
+    // A resting patch (held by the last solve) approaching slower than gravity closes in a tick is
+    // stopped plastically at its touching centroid, one impulse as in issue 9 (a pile's patches,
+    // every tick); a faster one (an impact, a rocking plate) is resolved over its points.
+    if (resting && fastest <= resting_speed) {
+        points.assign(1, m.centroid);
+        restitution.assign(1, 0.0);
+        if (!(approach(m.centroid) > 0.0)) return false;
+    }
+    if (points.size() == 1) {   // one point: the coupled sticking / sliding impulse there
+        const ImpulseResult r = newtonCoulombImpulse(a, b, points[0], m.normal, restitution[0], m.friction);
+        if (r.trouble == ImpulseTrouble::IllConditioned) ++report.ill_conditioned;
+        if (r.trouble == ImpulseTrouble::Degenerate) ++report.degenerate;
+        if (!r.impulse.allFinite()) {
+            ++report.nonfinite;
+            return false;
+        }
+        if (r.impulse.isZero(0.0)) return false;
+        a.applyImpulse(-r.impulse, points[0]);
+        b.applyImpulse(r.impulse, points[0]);
+        for (RigidBody* body : {&a, &b})
+            if (!body->infiniteMass()) report.impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
+        m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
+        return true;
+    }
+    const PatchImpulse imp = patchImpulse(a, b, points, m.centroid, m.normal, restitution, m.friction);
+    if (imp.trouble == ImpulseTrouble::IllConditioned) ++report.ill_conditioned;
+    bool finite = imp.tangent.allFinite();
+    for (double x : imp.normal) finite = finite && std::isfinite(x);
+    if (!finite) {
+        ++report.nonfinite;
+        return false;
+    }
+    if (!imp.any()) return false;
+    applyPatchImpulse(a, b, points, m.centroid, m.normal, imp);
+    for (RigidBody* body : {&a, &b})
+        if (!body->infiniteMass()) report.impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
+    for (double x : imp.normal) m.collision_impulse += x;
+    return true;
+}
+
 void NativeBackend::emitEvents(const std::vector<PairSample>& samples, double t) {
     // One event per pair that starts touching with a positive impulse: at its strongest manifold.
     for (const PairSample& s : samples) {
         if (s.manifolds.empty()) continue;
         const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
-        if (ps.touching) continue;   // continuing contact
+        if (ps.in_contact || !(s.distance < scene_.collision_distance)) continue;   // continuing, or not yet
         double sum = 0.0;
         const ContactManifold* best = nullptr;
         for (const ContactManifold& m : s.manifolds) {

@@ -22,6 +22,7 @@
 #include "backend/body_shape.h"
 #include "backend/native_settings.h"
 #include "backend/native_statistics.h"
+#include "backend/part_query.h"
 #include "dynamics/contact.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/persistent_manifold.h"
@@ -64,7 +65,8 @@ private:
         int a = -1, b = -1;
         std::vector<FeatureCache> caches;              // parts(a) x parts(b), row-major
         std::vector<PersistentManifold> manifolds;     // same indexing: warm-start impulses
-        bool touching = false;                         // at its last sample
+        bool touching = false;                         // at its last sample: it had a manifold (islands)
+        bool in_contact = false;                       // at its last sample: closer than the collision distance
         bool sampled_once = false;
         bool in_broad_phase = false;
         std::int64_t broad_stamp = -1;                 // broad-phase update that last listed it
@@ -99,6 +101,18 @@ private:
     /// changed, re-runs the sweep and prune; pairs that entered are appended to `entered`.
     void updateBroadPhase(bool all, std::vector<int>& entered);
     PairState& pairState(int a, int b);
+    /// [m] how far from the support plane a feature still belongs to a pair's contact patch: the
+    /// collision distance, plus in the speculative regime what the pair may close within a tick.
+    double patchReach(const PairState& ps) const;
+    /// True if `body` is held by its island's last solve at time t (drifting up to t) or is ground:
+    /// a pair of two such bodies is in the speculative regime, a pair with a body in flight in the
+    /// exact one.
+    bool heldAt(int body, double t) const {
+        return infinite_mass_[static_cast<std::size_t>(body)] ||
+               (held_[static_cast<std::size_t>(body)] != 0 && drift_until_[static_cast<std::size_t>(body)] >= t);
+    }
+    /// Fills m's points (at most four of the patch), their gaps and the centroid of what touches.
+    static void setManifoldPoints(const ContactPatch& patch, const ProximityResult& r, double cd, ContactManifold& m);
     /// Narrow phase of one pair at time t (its bodies must be valid at t). Pure in the pair.
     PairSample samplePair(int pair_index);
     /// Samples the pairs (bodies brought to t first), in parallel above a few pairs.
@@ -138,10 +152,18 @@ private:
     double gridTick(double t) const;
     /// Restitution and friction impulses at approaching manifolds, applied to `bodies` (one island's
     /// local copies; manifolds index them); a `resting` one (held at its last solve) approaching
-    /// slower than `resting_speed` [m/s] is stopped plastically (e = 0). Pure in its arguments, so
-    /// islands run on any worker.
+    /// slower than `resting_speed` [m/s] is stopped plastically (e = 0); `tick` [s] is the island's
+    /// step (speculative points reached within it collide now). Pure in its arguments, so islands
+    /// run on any worker.
     CollisionPhaseReport collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                                        const std::vector<std::uint8_t>& resting, double resting_speed) const;
+                                        const std::vector<std::uint8_t>& resting, double resting_speed,
+                                        double tick) const;
+    /// The collision phase of one manifold (Newton-Coulomb): its touching points and the speculative
+    /// ones reached within `tick` [s]; one point gets the coupled impulse of newton_coulomb.h, two or
+    /// more Newton restitution per point with patch friction (patch_impulse.h). Applied to a and b;
+    /// true if an impulse was applied.
+    bool manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
+                        double tick, CollisionPhaseReport& report) const;
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Impacts are resolved at touching, not at the window gap: a free sphere meeting a static body
     /// inside the window gets its refined touching time (within `horizon` [s] of `t`) as its pair's
@@ -175,6 +197,7 @@ private:
     /// longer holds it): it flies freely from its valid time on, and its pairs are bounded again.
     void endDrift(int body) {
         drift_until_[static_cast<std::size_t>(body)] = valid_at_[static_cast<std::size_t>(body)];
+        held_[static_cast<std::size_t>(body)] = 0;
         bumpVersion(body);
     }
     void bumpVersion(int body) {
@@ -200,6 +223,7 @@ private:
     std::vector<double> drift_until_;       // [s] per body: end of its current drift (<= valid_at_: none)
     std::vector<Vec3> drift_acceleration_;  // [m/s^2] per body: constant COM acceleration of the drift
     std::vector<Vec3> drift_torque_;        // [N m] per body: constant torque of the drift (world)
+    std::vector<std::uint8_t> held_;        // per body: its drift is its island's last solve (endDrift clears)
     std::vector<double> tick_end_;          // [s] per body: when its island is solved again (setTick)
     double next_tick_ = 0.0;                // [s] cached minimum of tick_end_ over touching bodies
     bool ticks_dirty_ = true;

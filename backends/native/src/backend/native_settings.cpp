@@ -26,6 +26,10 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "relative velocity by more than this (0: always run every sweep)"});
     s.push_back({"native.contact_substeps", T::Integer, "1", 1, 1000, {},
                  "island ticks per frame: the contact phase's step is frame_dt / this"});
+    s.push_back({"native.touching", T::Choice, "protected", 0, 0, {"protected", "speculative"},
+                 "touching islands: solved again whenever a feature could close past the window (motion "
+                 "bounds), or (experimental) held pairs solved on the sub-step grid only, with speculative "
+                 "points for what may close within a tick (docs/native-dynamics.md, \"Two regimes\")"});
     s.push_back({"native.warm_start", T::Boolean, "true", 0, 0, {},
                  "start each contact solve from the pair's previous impulses (persistent manifolds)"});
     s.push_back({"native.sleeping", T::Boolean, "false", 0, 0, {},
@@ -58,6 +62,9 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.solver_tolerance")) n.solver_tolerance = settings.real("native.solver_tolerance");
     if (has("native.contact_substeps"))
         n.contact_substeps = static_cast<int>(settings.integer("native.contact_substeps"));
+    if (has("native.touching"))
+        n.touching = settings.text("native.touching") == "speculative" ? TouchingRegime::Speculative
+                                                                      : TouchingRegime::Protected;
     if (has("native.warm_start")) n.warm_start = settings.boolean("native.warm_start");
     if (has("native.sleeping")) n.sleeping = settings.boolean("native.sleeping");
     if (has("native.sleep_speed")) n.sleep_speed = settings.real("native.sleep_speed");

@@ -9,6 +9,16 @@
 
 namespace vroc::native {
 
+/// How a touching island is scheduled between its grid ticks (docs/native-dynamics.md, "Two regimes").
+enum class TouchingRegime {
+    /// Fixed step: the island is solved on the sub-step grid only; features that may close within a
+    /// tick enter its solve as speculative points (they act when they would be reached).
+    Speculative,
+    /// Event-driven protection: the island is solved again whenever a feature could close past the
+    /// window (motion bounds), the schedule of issue 9.
+    Protected,
+};
+
 struct NativeSettings {
     ResponseModel response = ResponseModel::NewtonCoulomb;
     int threads = 1;                        ///< workers for the narrow phase (results identical for any)
@@ -19,6 +29,7 @@ struct NativeSettings {
     int shock_iterations = 8;               ///< shock-propagation sweeps per level (0 = off)
     double solver_tolerance = 0.0;          ///< [m/s] contact sweeps stop once a sweep changes no velocity more
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
+    TouchingRegime touching = TouchingRegime::Protected;   ///< how touching islands are scheduled (speculative: experimental)
     bool warm_start = true;                 ///< contact phase starts from the previous impulses
     bool sleeping = false;                  ///< islands at rest stop being simulated until touched
     double sleep_speed = 0.01;              ///< [m/s] a body is still below it (COM and |w| x radius)

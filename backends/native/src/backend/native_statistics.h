@@ -23,6 +23,7 @@ struct NativeStatistics {
     std::int64_t collisions = 0;             ///< collision events
     std::int64_t contacts = 0;               ///< touching part pairs, summed over internal steps
     std::int64_t contact_points = 0;         ///< contact-phase points, summed over internal steps
+    std::int64_t speculative_points = 0;     ///< of those, points beyond the collision distance
     std::int64_t contact_sweeps = 0;         ///< contact-phase sweeps run (they stop at the tolerance)
     std::int64_t shock_sweeps = 0;           ///< shock-propagation sweeps run, summed over levels
     std::int64_t position_corrections = 0;   ///< patches the split-impulse pass pushed back to the window
@@ -48,6 +49,7 @@ struct NativeStatistics {
         s["collision_events"] = static_cast<double>(collisions);
         s["contacts"] = static_cast<double>(contacts);
         s["contact_points_solved"] = static_cast<double>(contact_points);
+        s["speculative_points"] = static_cast<double>(speculative_points);
         s["contact_points_mean"] = static_cast<double>(contact_points) / steps;
         s["contact_sweeps_per_solve"] =
             static_cast<double>(contact_sweeps) / static_cast<double>(std::max<std::int64_t>(1, step_solves));

@@ -28,6 +28,12 @@ constexpr double kRecheckGapPerSize = 1e-6;
 // Shortest interval between solves of an island held by its last solve, as a fraction of its tick.
 constexpr double kHeldMinTick = 1.0 / 64.0;
 
+// Speculative regime: the longest island tick, in sub-steps (a tick after an off-grid solve ends at
+// the first grid point at least half a sub-step away), and the farthest a speculative feature may
+// be, as a fraction of the smaller body's inner radius.
+constexpr double kLongestTick = 1.5;
+constexpr double kSpeculativeReach = 0.25;
+
 // How far ahead [s] a pair's earliest collision time is computed for the queue.
 constexpr double kQueueHorizon = 1.0;
 // Pairs below this count are sampled on the calling thread (waking the pool costs more).
@@ -110,6 +116,12 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
     const ContactMaterial mat = combineMaterials(scene_.materials[scene_.bodies[ps.a].material],
                                                  scene_.materials[scene_.bodies[ps.b].material]);
     const double cd = scene_.collision_distance;
+    const double reach = patchReach(ps);
+    // Speculative regime: two held bodies (or one and the ground) within reach of each other are in
+    // their islands' solve with speculative points: no event is scheduled for them; a pair with a
+    // body in flight keeps the exact schedule (the queue) and becomes a manifold at touching.
+    const double t = valid_at_[static_cast<std::size_t>(ps.a)];
+    const double window = reach > cd && heldAt(ps.a, t) && heldAt(ps.b, t) ? reach : cd;
     for (std::size_t i = 0; i < sa.parts.size(); ++i) {
         const Pose pa = fa * sa.parts[i].local;
         for (std::size_t j = 0; j < sb.parts.size(); ++j) {
@@ -126,17 +138,15 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
                 out.distance = r.distance;
                 out.normal = r.normal;
             }
-            if (!(r.distance < cd)) continue;
+            if (!(r.distance < window)) continue;
             ContactManifold m;
             m.body_a = ps.a;
             m.body_b = ps.b;
             m.pair = pair_index;
             m.normal = r.normal;
             m.distance = r.distance;
-            const ContactPatch patch = partPatch(sa.parts[i], pa, sb.parts[j], pb, cache, r, cd);
-            m.centroid = patch.centroid;
-            m.points = reduceContactPoints(patch.points, r.normal);
-            if (m.points.empty()) m.points.push_back(patch.centroid);
+            const ContactPatch patch = partPatch(sa.parts[i], pa, sb.parts[j], pb, cache, r, cd, reach);
+            setManifoldPoints(patch, r, cd, m);
             m.restitution = mat.restitution;
             m.friction = mat.friction;
             out.manifolds.push_back(std::move(m));
@@ -144,6 +154,74 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
         }
     }
     return out;
+}
+
+double NativeBackend::patchReach(const PairState& ps) const {
+    const double cd = scene_.collision_distance;
+    if (settings_.touching != TouchingRegime::Speculative) return cd;
+    // What the pair can close over the longest tick (1.5 sub-steps, after an off-grid solve): the
+    // relative COM speed, each body's rotation at its outer radius, gravity against a body of
+    // infinite mass. Capped at a quarter of the smaller body's inner radius: a feature farther than
+    // that is not part of this contact, and a wide tolerance would let in faces of a rounded hull.
+    const RigidBody& a = bodies_[static_cast<std::size_t>(ps.a)];
+    const RigidBody& b = bodies_[static_cast<std::size_t>(ps.b)];
+    const BodyShape& sa = shapes_[static_cast<std::size_t>(ps.a)];
+    const BodyShape& sb = shapes_[static_cast<std::size_t>(ps.b)];
+    const double tick = kLongestTick * frame_dt_ / static_cast<double>(settings_.contact_substeps);
+    const bool one_ground = infinite_mass_[static_cast<std::size_t>(ps.a)] != infinite_mass_[static_cast<std::size_t>(ps.b)];
+    const double speed = (b.velocity - a.velocity).norm() + a.maxAngularSpeed() * sa.outer_radius +
+                         b.maxAngularSpeed() * sb.outer_radius + (one_ground ? scene_.gravity.norm() * tick : 0.0);
+    double size = kNever;
+    if (!infinite_mass_[static_cast<std::size_t>(ps.a)]) size = std::min(size, sa.inner_radius);
+    if (!infinite_mass_[static_cast<std::size_t>(ps.b)]) size = std::min(size, sb.inner_radius);
+    const double reach = std::min(speed * tick, kSpeculativeReach * size);
+    return cd + (std::isfinite(reach) && reach > 0.0 ? reach : 0.0);
+}
+
+void NativeBackend::setManifoldPoints(const ContactPatch& patch, const ProximityResult& r, double cd,
+                                      ContactManifold& m) {
+    // What touches keeps the polygon's extremes (at most four: the block solve's symmetric split);
+    // the speculative points keep their own four, the deepest first (Bullet's and Box2D's rule), so
+    // a tipping body's far vertices are never traded for one more point of the face it rests on.
+    std::vector<std::size_t> keep;
+    for (int side = 0; side < 2; ++side) {
+        std::vector<Vec3> pts;
+        std::vector<double> gaps;
+        std::vector<std::size_t> index;
+        for (std::size_t k = 0; k < patch.points.size(); ++k) {
+            const double gap = k < patch.gaps.size() ? patch.gaps[k] : r.distance;
+            if ((gap < cd) != (side == 0)) continue;
+            pts.push_back(patch.points[k]);
+            gaps.push_back(gap);
+            index.push_back(k);
+        }
+        for (std::size_t k : reduceContactPointIndices(pts, r.normal, side == 0 ? std::vector<double>{} : gaps))
+            keep.push_back(index[k]);
+    }
+    bool speculative = false;
+    for (std::size_t k : keep) {
+        m.points.push_back(patch.points[k]);
+        const double gap = k < patch.gaps.size() ? patch.gaps[k] : r.distance;
+        m.point_gap.push_back(gap);
+        speculative = speculative || !(gap < cd);
+    }
+    m.centroid = patch.centroid;
+    if (m.points.empty()) {
+        m.points.push_back(patch.centroid);
+        m.point_gap.push_back(r.distance);
+        return;
+    }
+    // The collision phase acts at the centroid of what touches now, never at a speculative point.
+    if (speculative) {
+        Vec3 sum = Vec3::Zero();
+        int touching = 0;
+        for (std::size_t k = 0; k < m.points.size(); ++k)
+            if (m.point_gap[k] < cd) {
+                sum += m.points[k];
+                ++touching;
+            }
+        m.centroid = touching > 0 ? Vec3(sum / touching) : Vec3(0.5 * (r.point_a + r.point_b));
+    }
 }
 
 std::vector<NativeBackend::PairSample> NativeBackend::samplePairs(const std::vector<int>& pairs, double t) {
@@ -225,6 +303,7 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
     const double cd = scene_.collision_distance;
     const bool touching = !s.manifolds.empty();
     ps.touching = touching;
+    ps.in_contact = touching && s.distance < cd;
     ps.sampled_once = true;
     double until_a = kNever, until_b = kNever;
     const MotionBound ma = motionBound(ps.a, until_a);
@@ -257,8 +336,12 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
     };
     const bool held = solved && drifting(ps.a) && drifting(ps.b);
     double bound = std::max(0.0, horizon);
+    // Speculative regime: a part pair the solve held (both bodies drifting) waits for its island's
+    // grid tick; what may close within the tick was in the solve as speculative points.
+    const bool speculative = held && settings_.touching == TouchingRegime::Speculative;
     for (std::size_t k = 0; k < s.parts.size(); ++k) {
         const PairSample::PartGap& g = s.parts[k];
+        if (speculative && g.distance < cd) continue;
         const double allowed =
             held ? g.distance - kSolvedFloor * cd
                  : (g.distance < cd ? std::max(g.distance - kTouchingFloor * cd, kTouchingMinAllowance * cd)

@@ -22,11 +22,12 @@ ProximityResult queryParts(const ConvexPart& pa, const Pose& fa, const ConvexPar
 }
 
 ContactPatch partPatch(const ConvexPart& pa, const Pose& fa, const ConvexPart& pb, const Pose& fb,
-                       const FeatureCache& cache, const ProximityResult& r, double tolerance) {
-    if (!pa.is_sphere && !pb.is_sphere) return contactPatch(*pa.mesh, fa, *pb.mesh, fb, cache, r, tolerance);
+                       const FeatureCache& cache, const ProximityResult& r, double tolerance, double reach) {
+    if (!pa.is_sphere && !pb.is_sphere) return contactPatch(*pa.mesh, fa, *pb.mesh, fb, cache, r, tolerance, reach);
     ContactPatch p;
     p.centroid = 0.5 * (r.point_a + r.point_b);
     p.points.push_back(p.centroid);
+    p.gaps.push_back(r.distance);
     return p;
 }
 

@@ -16,6 +16,6 @@ ProximityResult queryParts(const ConvexPart& pa, const Pose& fa, const ConvexPar
 /// Contact region of a touching part pair (world): the patch polygon for two meshes, the single
 /// mid-point otherwise.
 ContactPatch partPatch(const ConvexPart& pa, const Pose& fa, const ConvexPart& pb, const Pose& fb,
-                       const FeatureCache& cache, const ProximityResult& r, double tolerance);
+                       const FeatureCache& cache, const ProximityResult& r, double tolerance, double reach = 0.0);
 
 }  // namespace vroc::native

@@ -16,6 +16,10 @@ struct ContactManifold {
     double distance = 0.0;            ///< [m] signed gap of the closest features
     Vec3 centroid = Vec3::Zero();     ///< [m] single-point models: the patch centroid, world
     std::vector<Vec3> points;         ///< [m] manifold: the patch polygon (>= 1 point), world
+    /// [m] per point of `points`: its separation along the normal (empty: every point at
+    /// `distance`). A point beyond the collision distance is speculative: the contact phase lets it
+    /// close to the speculative target within the step, and holds it there.
+    std::vector<double> point_gap;
     double restitution = 0.0;         ///< [-] combined (minimum)
     double friction = 0.0;            ///< [-] combined (geometric mean)
     double collision_impulse = 0.0;   ///< [N s] normal impulse of the collision phase (output)

@@ -640,7 +640,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     std::vector<PointConstraint> cs;
     std::vector<Patch> patches;
     const bool single_point = settings.model == ResponseModel::Vroc1995;
-    auto constraintAt = [&](const ContactManifold& mf, int m, const Vec3& p) {
+    auto constraintAt = [&](const ContactManifold& mf, int m, const Vec3& p, double gap) {
         PointConstraint c;
         c.a = mf.body_a;
         c.b = mf.body_b;
@@ -655,23 +655,33 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         c.rb_n = c.rb.cross(c.n);
         c.start_speed = relativeVelocity(wb, c).dot(c.n);
         c.target = -std::max(0.0, c.start_speed);
+        // A speculative point may close by `allowed` over the step: the positions move with the mean
+        // of the start and end velocities, so its end speed may approach by up to 2 allowed / h more
+        // (never asking an approaching point to turn back: that would add energy).
+        const double allowed = gap >= settings.speculative_from ? gap - settings.speculative_target : 0.0;
+        if (allowed > 0.0 && h > 0.0) {
+            const double loose = -c.start_speed - 2.0 * allowed / h;
+            c.target = c.start_speed >= 0.0 ? loose : std::min(0.0, loose);
+        }
         return c;
     };
     for (std::size_t m = 0; m < manifolds.size(); ++m) {
         const ContactManifold& mf = manifolds[m];
         std::vector<Vec3> pts = single_point ? std::vector<Vec3>{mf.centroid} : mf.points;
         if (pts.empty()) pts.push_back(mf.centroid);
+        const bool gaps = !single_point && mf.point_gap.size() == pts.size();
         Patch patch;
         patch.first = static_cast<int>(cs.size());
         patch.count = static_cast<int>(pts.size());
-        patch.friction = constraintAt(mf, static_cast<int>(m), mf.centroid);
+        patch.friction = constraintAt(mf, static_cast<int>(m), mf.centroid, mf.distance);
         if (pts.size() > 2) {
             double mean = 0.0;
             for (const Vec3& p : pts) mean += (p - mf.centroid).norm();
             patch.torsion_radius = (2.0 / 3.0) * mean / static_cast<double>(pts.size());
         }
         patches.push_back(patch);
-        for (const Vec3& p : pts) cs.push_back(constraintAt(mf, static_cast<int>(m), p));
+        for (std::size_t k = 0; k < pts.size(); ++k)
+            cs.push_back(constraintAt(mf, static_cast<int>(m), pts[k], gaps ? mf.point_gap[k] : mf.distance));
     }
     report.points = static_cast<int>(cs.size());
     for (std::size_t i = 0; i < bodies.size(); ++i) {

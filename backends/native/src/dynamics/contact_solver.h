@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "dynamics/contact.h"
@@ -39,6 +40,10 @@ struct ContactSolverSettings {
     double correction_target = 0.0;
     double correction_rate = 0.8;
     int correction_iterations = 8;   ///< pseudo-velocity Gauss-Seidel sweeps (0 = off)
+    /// Speculative points (ContactManifold::point_gap at or above `speculative_from` [m]) may close
+    /// to `speculative_target` [m] within the step: they push only when they would be reached then.
+    double speculative_from = std::numeric_limits<double>::infinity();
+    double speculative_target = 0.0;
     /// Optional workers for the sweeps of one large island: team(fn) calls fn(worker) for every
     /// worker in [0, team_size) at once and returns when all have returned. Empty: the calling
     /// thread alone. The sweeps visit patches in groups that share no moving body, in an order that

@@ -4,18 +4,30 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace vroc::native {
 
 std::vector<Vec3> reduceContactPoints(const std::vector<Vec3>& points, const Vec3& normal) {
+    std::vector<Vec3> out;
+    for (std::size_t i : reduceContactPointIndices(points, normal)) out.push_back(points[i]);
+    return out;
+}
+
+std::vector<std::size_t> reduceContactPointIndices(const std::vector<Vec3>& points, const Vec3& normal,
+                                                   const std::vector<double>& gaps) {
     const std::size_t n = points.size();
-    if (n <= kMaxManifoldPoints) return points;
+    if (n <= kMaxManifoldPoints) {
+        std::vector<std::size_t> all(n);
+        for (std::size_t i = 0; i < n; ++i) all[i] = i;
+        return all;
+    }
     Vec3 centroid = Vec3::Zero();
     for (const Vec3& p : points) centroid += p;
     centroid /= static_cast<double>(n);
     auto argmax = [&](auto score) {
         std::size_t best = 0;
-        double best_score = -1.0;
+        double best_score = -std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < n; ++i) {
             const double s = score(i);
             if (s > best_score) {
@@ -25,7 +37,8 @@ std::vector<Vec3> reduceContactPoints(const std::vector<Vec3>& points, const Vec
         }
         return best;
     };
-    const std::size_t i0 = argmax([&](std::size_t i) { return (points[i] - centroid).squaredNorm(); });
+    const std::size_t i0 = gaps.size() == n ? argmax([&](std::size_t i) { return -gaps[i]; })
+                                            : argmax([&](std::size_t i) { return (points[i] - centroid).squaredNorm(); });
     const std::size_t i1 = argmax([&](std::size_t i) { return (points[i] - points[i0]).squaredNorm(); });
     auto area = [&](std::size_t x, std::size_t y, std::size_t z) {   // signed, about the normal
         return (points[y] - points[x]).cross(points[z] - points[x]).dot(normal);
@@ -40,9 +53,7 @@ std::vector<Vec3> reduceContactPoints(const std::vector<Vec3>& points, const Vec
     std::vector<std::size_t> keep{i0, i1, i2, i3};
     std::sort(keep.begin(), keep.end());
     keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
-    std::vector<Vec3> out;
-    for (std::size_t i : keep) out.push_back(points[i]);
-    return out;
+    return keep;
 }
 
 namespace {

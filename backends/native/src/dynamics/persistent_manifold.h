@@ -33,6 +33,10 @@ struct PersistentManifold {
 /// farthest from the centroid, the point farthest from it, the one spanning the largest triangle
 /// with those two, then the one adding the most area. Order of the input is kept (still CCW).
 std::vector<Vec3> reduceContactPoints(const std::vector<Vec3>& points, const Vec3& normal);
+/// The same choice as indices into `points` (ascending), so data kept per point follows it. With
+/// `gaps` (one per point), the first point kept is the deepest instead of the farthest from the centroid.
+std::vector<std::size_t> reduceContactPointIndices(const std::vector<Vec3>& points, const Vec3& normal,
+                                                   const std::vector<double>& gaps = {});
 
 /// Fills m.point_impulse, m.tangent_impulse and m.torsion_impulse from the cache for a solve of
 /// `step` [s] (impulses scale with the step, up by at most 3x: a resting load needs m g h). `frame_a` is body A's

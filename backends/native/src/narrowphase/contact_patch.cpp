@@ -4,7 +4,9 @@
 // the Sutherland–Hodgman overlap polygon, edge against face the clipped segment, parallel edges
 // their overlap, anything else the single closest point. Results are projected to the plane
 // half-way between the two surfaces.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/convex_mesh.h"
 #include "narrowphase/contact_patch.h"
@@ -98,18 +100,168 @@ Poly2 clipSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Poly
     return {p + lo * (q - p), p + hi * (q - p)};
 }
 
+/// [m] the height along n (from `mid`) of the piece `pts` (world) above the mid-plane point at 2D
+/// coordinates x: on the piece's plane for a face, along its line for an edge, its own for a point.
+double pieceHeight(const std::vector<Vec3>& pts, const Eigen::Vector2d& x, const Vec3& mid, const Vec3& u,
+                   const Vec3& w, const Vec3& n) {
+    const Vec3 at = mid + x.x() * u + x.y() * w;
+    if (pts.size() >= 3) {
+        Vec3 normal = Vec3::Zero();   // Newell's method: robust for any planar polygon
+        for (std::size_t k = 0; k < pts.size(); ++k) normal += pts[k].cross(pts[(k + 1) % pts.size()]);
+        const double along = normal.dot(n);
+        if (std::abs(along) > 1e-9 * normal.norm()) return normal.dot(pts[0] - at) / along;
+    }
+    if (pts.size() >= 2) {
+        const Vec3 d = pts[1] - pts[0];
+        const Vec3 dp = d - d.dot(n) * n;   // the edge's direction in the plane
+        const double len2 = dp.squaredNorm();
+        const double s = len2 > 0.0 ? std::clamp((at - pts[0]).dot(dp) / len2, 0.0, 1.0) : 0.0;
+        return (pts[0] + s * d - mid).dot(n);
+    }
+    return (pts[0] - mid).dot(n);
+}
+
+/// [m] the height along n (from `mid`) of body m's surface on the line through the mid-plane point
+/// x along n: its top (side = +1) or bottom (side = -1), from the face planes (a convex body is the
+/// intersection of its faces' half-spaces). NaN if the line misses it.
+double surfaceHeight(const ConvexMesh& m, const Pose& pose, const Eigen::Vector2d& x, const Vec3& mid, const Vec3& u,
+                     const Vec3& w, const Vec3& n, double side) {
+    const Vec3 at = mid + x.x() * u + x.y() * w;
+    // Points on the body's outline (a face parallel to n, an edge) count as on it: rounding must not
+    // make the line through a vertex miss the body it belongs to.
+    const double eps = 1e-9 * (1.0 + (pose.position - at).norm());
+    double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < m.faceCount(); ++f) {
+        const Vec3 fn = pose.rotate(m.faceNormal(f));
+        const int h = m.faceEdge(f);
+        const double offset = fn.dot(pose.apply(m.position(m.origin(h))) - at);   // fn.(z n) <= offset
+        const double along = fn.dot(n);
+        if (along > 1e-9) hi = std::min(hi, offset / along);
+        else if (along < -1e-9) lo = std::max(lo, offset / along);
+        else if (offset < -eps) return std::numeric_limits<double>::quiet_NaN();
+    }
+    if (lo > hi + eps) return std::numeric_limits<double>::quiet_NaN();
+    if (lo > hi) return 0.5 * (lo + hi);
+    return side > 0.0 ? hi : lo;
+}
+
+/// The face of the feature (or around it) whose world normal is most aligned with `dir`.
+int alignedFace(const ConvexMesh& m, const Pose& pose, Feature f, const Vec3& dir) {
+    std::vector<int> faces;
+    if (f.type == FeatureType::Face) return f.index;
+    if (f.type == FeatureType::Edge) faces = {m.face(f.index), m.face(f.index ^ 1)};
+    if (f.type == FeatureType::Vertex) {
+        const int first = m.vertexEdge(f.index);
+        for (int h = first;;) {
+            faces.push_back(m.face(h));
+            if ((h = m.nextAroundOrigin(h)) == first) break;
+        }
+    }
+    int best = -1;
+    double best_dot = -2.0;
+    for (int g : faces) {
+        const double d = pose.rotate(m.faceNormal(g)).dot(dir);
+        if (d > best_dot) {
+            best_dot = d;
+            best = g;
+        }
+    }
+    return best;
+}
+
+/// Reference and incident faces clipped, points kept within `reach` (see contactPatch).
+ContactPatch speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+                              const FeatureCache& cache, const ProximityResult& result, double tolerance,
+                              double reach) {
+    ContactPatch patch;
+    const Vec3 n = result.normal;
+    const int fa = alignedFace(a, pose_a, cache.a, n);
+    const int fb = alignedFace(b, pose_b, cache.b, -n);
+    if (fa < 0 || fb < 0) return patch;
+    const std::vector<Vec3> pa = faceWorld(a, pose_a, fa);
+    const std::vector<Vec3> pb = faceWorld(b, pose_b, fb);
+    const Vec3 mid = 0.5 * (result.point_a + result.point_b);
+    Vec3 u, w;
+    planeBasis(n, u, w);
+    auto to2 = [&](const Vec3& x) { return Eigen::Vector2d((x - mid).dot(u), (x - mid).dot(w)); };
+    Poly2 a2, b2;
+    for (const Vec3& x : pa) a2.push_back(to2(x));
+    for (auto it = pb.rbegin(); it != pb.rend(); ++it) b2.push_back(to2(*it));   // B's CCW is about -n
+    // Candidates: the overlap of the two faces (where their edges cross), and every vertex of either
+    // body within reach of the other's face plane over that face: a box tipping over an edge brings
+    // down the vertices of the face beyond the edge, which the incident face does not hold.
+    // Each candidate with its height on B's surface (nan: from B's surface over x) and on A's.
+    struct Candidate {
+        Eigen::Vector2d x;
+        double on_b, on_a;
+    };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<Candidate> candidates;
+    for (const Eigen::Vector2d& x : clipPolygon(b2, a2)) candidates.push_back({x, nan, nan});
+    auto inside = [](const Poly2& poly, const Eigen::Vector2d& x) {
+        for (std::size_t i = 0; i < poly.size(); ++i)
+            if (cross2(poly[(i + 1) % poly.size()] - poly[i], x - poly[i]) < 0.0) return false;
+        return true;
+    };
+    for (int v = 0; v < b.vertexCount(); ++v) {
+        const Vec3 x = pose_b.apply(b.position(v));
+        const double on_b = (x - mid).dot(n);
+        if (on_b - pieceHeight(pa, to2(x), mid, u, w, n) <= reach && inside(a2, to2(x))) candidates.push_back({to2(x), on_b, nan});
+    }
+    for (int v = 0; v < a.vertexCount(); ++v) {
+        const Vec3 y = pose_a.apply(a.position(v));
+        const double on_a = (y - mid).dot(n);
+        if (pieceHeight(pb, to2(y), mid, u, w, n) - on_a <= reach && inside(b2, to2(y))) candidates.push_back({to2(y), nan, on_a});
+    }
+    Vec3 touching_sum = Vec3::Zero();
+    int touching = 0;
+    const double merge2 = 1e-12 * (a2.empty() ? 1.0 : (a2[0].squaredNorm() + 1.0));
+    std::vector<Eigen::Vector2d> kept;
+    for (const Candidate& c : candidates) {
+        const Eigen::Vector2d& x = c.x;
+        if (std::any_of(kept.begin(), kept.end(), [&](const Eigen::Vector2d& k) { return (k - x).squaredNorm() <= merge2; }))
+            continue;
+        // The gap between the two bodies' surfaces above x: B's lowest minus A's highest point there
+        // (a vertex's own height where x is a vertex: the line through it may miss its body by rounding).
+        const double on_b = std::isnan(c.on_b) ? surfaceHeight(b, pose_b, x, mid, u, w, n, -1.0) : c.on_b;
+        const double on_a = std::isnan(c.on_a) ? surfaceHeight(a, pose_a, x, mid, u, w, n, 1.0) : c.on_a;
+        const double gap = on_b - on_a;
+        if (!std::isfinite(gap) || !(gap <= reach)) continue;
+        kept.push_back(x);
+        const Vec3 p = mid + x.x() * u + x.y() * w;
+        patch.points.push_back(p);
+        patch.gaps.push_back(gap);
+        if (gap < tolerance) {
+            touching_sum += p;
+            ++touching;
+        }
+    }
+    // Only a patch that holds what touches now: otherwise the closest features are elsewhere.
+    if (touching == 0) {
+        patch.points.clear();
+        patch.gaps.clear();
+        return patch;
+    }
+    patch.centroid = touching_sum / touching;
+    return patch;
+}
+
 }  // namespace
 
 ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
-                          const FeatureCache& cache, const ProximityResult& result, double tolerance) {
+                          const FeatureCache& cache, const ProximityResult& result, double tolerance, double reach) {
     const Vec3 n = result.normal;
     const Vec3 mid = 0.5 * (result.point_a + result.point_b);
-    std::vector<Vec3> pa = supportPiece(a, pose_a, cache.a, n, result.point_a, tolerance);
-    std::vector<Vec3> pb = supportPiece(b, pose_b, cache.b, -n, result.point_b, tolerance);
     Vec3 u, w;
     planeBasis(n, u, w);
     auto to2 = [&](const Vec3& x) { return Eigen::Vector2d((x - mid).dot(u), (x - mid).dot(w)); };
     auto to3 = [&](const Eigen::Vector2d& x) { return Vec3(mid + x.x() * u + x.y() * w); };
+    if (reach > tolerance) {
+        ContactPatch patch = speculativePatch(a, pose_a, b, pose_b, cache, result, tolerance, reach);
+        if (!patch.points.empty()) return patch;
+    }
+    std::vector<Vec3> pa = supportPiece(a, pose_a, cache.a, n, result.point_a, tolerance);
+    std::vector<Vec3> pb = supportPiece(b, pose_b, cache.b, -n, result.point_b, tolerance);
     Poly2 a2, b2, out;
     for (const Vec3& x : pa) a2.push_back(to2(x));
     for (auto it = pb.rbegin(); it != pb.rend(); ++it) b2.push_back(to2(*it));   // B's CCW is about -n
@@ -128,6 +280,7 @@ ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexM
     ContactPatch patch;
     if (out.empty()) {
         patch.points = {mid};
+        patch.gaps = {result.distance};
         patch.centroid = mid;
         return patch;
     }
@@ -139,6 +292,7 @@ ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexM
         c += cr * (out[k] + out[(k + 1) % out.size()]);
         mean += out[k];
         patch.points.push_back(to3(out[k]));
+        patch.gaps.push_back(pieceHeight(pb, out[k], mid, u, w, n) - pieceHeight(pa, out[k], mid, u, w, n));
     }
     mean /= static_cast<double>(out.size());
     // Area centroid for a polygon; the mean for a segment, a point or a degenerate sliver.

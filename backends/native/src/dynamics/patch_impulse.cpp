@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: MIT
+#include "dynamics/patch_impulse.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+
+namespace vroc::native {
+namespace {
+
+// Passes over the patch: the normal impulses exactly (the complementarity problem below), then the
+// friction impulse; a pass that changes no impulse by more than kRelativeChange of the largest one
+// ends it. Without friction the first pass is the answer.
+constexpr int kMaxPasses = 8;
+constexpr double kRelativeChange = 1e-6;
+constexpr int kMaxPoints = 8;   // a manifold keeps at most four touching and four speculative points
+
+using Block = Eigen::Matrix<double, kMaxPoints, kMaxPoints>;
+using BlockVector = Eigen::Matrix<double, kMaxPoints, 1>;
+using SubMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxPoints, kMaxPoints>;
+using SubVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxPoints, 1>;
+
+// The frictionless patch problem is the LCP w = M y + q >= 0, y >= 0, y.w = 0 with M symmetric
+// positive semi-definite: the optimality conditions of min 1/2 y'My + q'y over y >= 0. Solved
+// exactly by the active-set method of Lawson and Hanson's NNLS (1974, ch. 23) applied to that
+// quadratic programme: free points are solved as a block (their speeds brought to the targets), a
+// point whose impulse would turn negative leaves the set by the largest feasible step, the most
+// violated point joins it. Finite for these sizes; the iteration cap guards rounding cycles.
+BlockVector solveNormalLcp(const Block& m_in, const BlockVector& q, int count) {
+    // Four or more coplanar points make M singular (a rigid pair has three normal degrees of
+    // freedom): a tiny ridge makes it definite, so the active set's subproblems always have one
+    // solution, the limit of which is the minimum-norm split (a flat box's four equal impulses).
+    // It moves the normal speeds by about 1e-12 of the impulses' scale.
+    Block m = m_in;
+    const double ridge = 1e-12 * m.diagonal().head(count).maxCoeff();
+    for (int i = 0; i < count; ++i) m(i, i) += ridge;
+    BlockVector y = BlockVector::Zero();
+    std::array<bool, kMaxPoints> free{};
+    const double scale = q.head(count).cwiseAbs().maxCoeff() + 1e-300;
+    const double tol = 1e-12 * scale;
+    for (int outer = 0; outer < 4 * kMaxPoints; ++outer) {
+        const BlockVector w = m * y + q;
+        int join = -1;
+        for (int i = 0; i < count; ++i)
+            if (!free[static_cast<std::size_t>(i)] && w(i) < -tol && (join < 0 || w(i) < w(join))) join = i;
+        if (join < 0) break;
+        free[static_cast<std::size_t>(join)] = true;
+        for (int inner = 0; inner < 4 * kMaxPoints; ++inner) {
+            int k = 0;
+            std::array<int, kMaxPoints> idx{};
+            for (int i = 0; i < count; ++i)
+                if (free[static_cast<std::size_t>(i)]) idx[static_cast<std::size_t>(k++)] = i;
+            SubMatrix mf(k, k);
+            SubVector qf(k);
+            for (int r = 0; r < k; ++r) {
+                qf(r) = -q(idx[static_cast<std::size_t>(r)]);
+                for (int c = 0; c < k; ++c) mf(r, c) = m(idx[static_cast<std::size_t>(r)], idx[static_cast<std::size_t>(c)]);
+            }
+            const SubVector zf = Eigen::LDLT<SubMatrix>(mf).solve(qf);
+            BlockVector z = BlockVector::Zero();
+            for (int r = 0; r < k; ++r) z(idx[static_cast<std::size_t>(r)]) = zf(r);
+            bool positive = true;
+            for (int r = 0; r < k; ++r) positive = positive && z(idx[static_cast<std::size_t>(r)]) > 0.0;
+            if (positive || !z.allFinite()) {
+                if (z.allFinite()) y = z;
+                break;
+            }
+            // Step from y towards z as far as every free impulse stays >= 0; those reaching 0 leave.
+            double alpha = 1.0;
+            for (int r = 0; r < k; ++r) {
+                const int i = idx[static_cast<std::size_t>(r)];
+                if (z(i) <= 0.0) alpha = std::min(alpha, y(i) / (y(i) - z(i)));
+            }
+            y += alpha * (z - y);
+            for (int r = 0; r < k; ++r) {
+                const int i = idx[static_cast<std::size_t>(r)];
+                if (y(i) <= tol * 1e-3) {
+                    y(i) = 0.0;
+                    free[static_cast<std::size_t>(i)] = false;
+                }
+            }
+        }
+    }
+    // The free set found, its impulses without the ridge: the minimum-norm solution there (exact
+    // for the flat box's symmetric split), kept if it stays non-negative.
+    int k = 0;
+    std::array<int, kMaxPoints> idx{};
+    for (int i = 0; i < count; ++i)
+        if (free[static_cast<std::size_t>(i)]) idx[static_cast<std::size_t>(k++)] = i;
+    if (k == 0) return y;
+    SubMatrix mf(k, k);
+    SubVector qf(k);
+    for (int r = 0; r < k; ++r) {
+        qf(r) = -q(idx[static_cast<std::size_t>(r)]);
+        for (int c = 0; c < k; ++c) mf(r, c) = m_in(idx[static_cast<std::size_t>(r)], idx[static_cast<std::size_t>(c)]);
+    }
+    const SubVector exact = Eigen::CompleteOrthogonalDecomposition<SubMatrix>(mf).solve(qf);
+    if (!exact.allFinite() || exact.minCoeff() < 0.0) return y;
+    BlockVector out = BlockVector::Zero();
+    for (int r = 0; r < k; ++r) out(idx[static_cast<std::size_t>(r)]) = exact(r);
+    return out;
+}
+
+struct Side {
+    Vec3 v = Vec3::Zero(), w = Vec3::Zero();
+    double inv_mass = 0.0;
+    Mat3 inv_inertia = Mat3::Zero();
+    Vec3 com = Vec3::Zero();
+    bool moves = false;   // finite mass: impulses change it
+
+    explicit Side(const RigidBody& rb) : v(rb.velocity), w(rb.angularVelocity()), com(rb.com), moves(!rb.infiniteMass()) {
+        if (moves) {
+            inv_mass = rb.inv_mass;
+            inv_inertia = rb.invInertiaWorld();
+        }
+    }
+    Vec3 at(const Vec3& p) const { return v + w.cross(p - com); }
+    void push(const Vec3& j, const Vec3& p) {   // impulse j at p
+        if (!moves) return;
+        v += inv_mass * j;
+        w += inv_inertia * (p - com).cross(j);
+    }
+};
+
+}  // namespace
+
+bool PatchImpulse::any() const {
+    return !tangent.isZero(0.0) || std::any_of(normal.begin(), normal.end(), [](double x) { return x != 0.0; });
+}
+
+PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, const std::vector<Vec3>& points,
+                          const Vec3& centroid, const Vec3& n, const std::vector<double>& restitution,
+                          double friction) {
+    PatchImpulse out;
+    const int count = static_cast<int>(points.size());
+    out.normal.assign(points.size(), 0.0);
+    if (count == 0 || count > kMaxPoints || restitution.size() != points.size()) return out;
+    Side sa(a), sb(b);
+    auto normalSpeed = [&](int i) { return n.dot(sb.at(points[static_cast<std::size_t>(i)]) - sa.at(points[static_cast<std::size_t>(i)])); };
+    // Targets from the approach speeds before the impact: an approaching point leaves at e times its
+    // approach speed at least; any other point only must not approach.
+    BlockVector target = BlockVector::Zero();
+    bool approaching = false;
+    for (int i = 0; i < count; ++i) {
+        const double u = normalSpeed(i);
+        if (u < 0.0) {
+            target(i) = -restitution[static_cast<std::size_t>(i)] * u;
+            approaching = true;
+        }
+    }
+    if (!approaching) return out;
+    // The normal block: relative normal speed change at i per unit normal impulse at j.
+    std::array<Vec3, kMaxPoints> arm_a, arm_b;
+    for (int i = 0; i < count; ++i) {
+        arm_a[static_cast<std::size_t>(i)] = (points[static_cast<std::size_t>(i)] - sa.com).cross(n);
+        arm_b[static_cast<std::size_t>(i)] = (points[static_cast<std::size_t>(i)] - sb.com).cross(n);
+    }
+    Block m = Block::Zero();
+    for (int i = 0; i < count; ++i)
+        for (int j = 0; j < count; ++j)
+            m(i, j) = sa.inv_mass + sb.inv_mass + arm_a[static_cast<std::size_t>(i)].dot(sa.inv_inertia * arm_a[static_cast<std::size_t>(j)]) +
+                      arm_b[static_cast<std::size_t>(i)].dot(sb.inv_inertia * arm_b[static_cast<std::size_t>(j)]);
+    // Friction at the centroid: its tangential mass.
+    const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    auto tangentMass = [&]() {
+        Mat3 k = Mat3::Zero();
+        for (const Side* s : {&sa, &sb}) {
+            if (!s->moves) continue;
+            const Mat3 r = skew(centroid - s->com);
+            k += s->inv_mass * Mat3::Identity() - r * s->inv_inertia * r;
+        }
+        Eigen::Matrix2d kt;
+        kt << t1.dot(k * t1), t1.dot(k * t2), t2.dot(k * t1), t2.dot(k * t2);
+        return kt;
+    };
+    const Eigen::Matrix2d kt = tangentMass();
+    const bool friction_ok = friction > 0.0 && kt.determinant() > 0.0;
+    const Eigen::Matrix2d kt_inv = friction_ok ? Eigen::Matrix2d(kt.inverse()) : Eigen::Matrix2d::Zero();
+    Eigen::Vector2d lambda_t = Eigen::Vector2d::Zero();
+    auto pushNormal = [&](int i, double d) {
+        const Vec3 j = d * n;
+        sa.push(-j, points[static_cast<std::size_t>(i)]);
+        sb.push(j, points[static_cast<std::size_t>(i)]);
+        out.normal[static_cast<std::size_t>(i)] += d;
+    };
+    for (int pass = 0; pass < kMaxPasses; ++pass) {
+        double change = 0.0;
+        // Normal: the exact complementarity solution given the friction impulse so far, for the
+        // totals y (w = u + M (y - lambda) - target = M y + q).
+        BlockVector lambda = BlockVector::Zero();
+        for (int i = 0; i < count; ++i) lambda(i) = out.normal[static_cast<std::size_t>(i)];
+        BlockVector q = BlockVector::Zero();
+        for (int i = 0; i < count; ++i) q(i) = normalSpeed(i) - target(i);
+        q.head(count) -= (m * lambda).head(count);
+        const BlockVector y = solveNormalLcp(m, q, count);
+        if (!y.allFinite()) {
+            out.trouble = ImpulseTrouble::IllConditioned;
+            break;
+        }
+        for (int i = 0; i < count; ++i) {
+            const double d = y(i) - lambda(i);
+            change = std::max(change, std::abs(d));
+            pushNormal(i, d);
+        }
+        // Friction: stop the centroid's slip inside the cone of the summed normal impulses.
+        if (friction_ok) {
+            double sum = 0.0;
+            for (double x : out.normal) sum += x;
+            const Vec3 u = sb.at(centroid) - sa.at(centroid);
+            Eigen::Vector2d cand = lambda_t - kt_inv * Eigen::Vector2d(u.dot(t1), u.dot(t2));
+            const double limit = friction * sum;
+            if (cand.norm() > limit) cand *= cand.norm() > 0.0 ? limit / cand.norm() : 0.0;
+            const Eigen::Vector2d d = cand - lambda_t;
+            lambda_t = cand;
+            const Vec3 j = d(0) * t1 + d(1) * t2;
+            sa.push(-j, centroid);
+            sb.push(j, centroid);
+            change = std::max(change, d.norm());
+        }
+        double scale = 0.0;
+        for (double x : out.normal) scale = std::max(scale, x);
+        if (!(change > kRelativeChange * scale)) break;
+    }
+    out.tangent = lambda_t(0) * t1 + lambda_t(1) * t2;
+    for (double x : out.normal)
+        if (!std::isfinite(x)) out.trouble = ImpulseTrouble::IllConditioned;
+    return out;
+}
+
+void applyPatchImpulse(RigidBody& a, RigidBody& b, const std::vector<Vec3>& points, const Vec3& centroid,
+                       const Vec3& n, const PatchImpulse& imp) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (imp.normal[i] == 0.0) continue;
+        a.applyImpulse(-imp.normal[i] * n, points[i]);
+        b.applyImpulse(imp.normal[i] * n, points[i]);
+    }
+    if (!imp.tangent.isZero(0.0)) {
+        a.applyImpulse(-imp.tangent, centroid);
+        b.applyImpulse(imp.tangent, centroid);
+    }
+}
+
+}  // namespace vroc::native

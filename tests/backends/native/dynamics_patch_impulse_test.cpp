@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+// The patch impulse (dynamics/patch_impulse.h) against closed forms and a brute-force
+// complementarity solve: a flat box landing on four corners leaves at e times its speed without
+// turning; a rocking plate's approaching corner is stopped and nothing is pulled; random
+// frictionless patches match the active-set enumeration of the same small LCP.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <Eigen/LU>
+
+#include "dynamics/newton_coulomb.h"
+#include "dynamics/patch_impulse.h"
+#include "native_test_scenes.h"
+
+namespace vroc::native::test {
+namespace {
+
+RigidBody boxBody(const Vec3& half, double mass, const Pose& pose, const Vec3& v, const Vec3& w) {
+    Body b;
+    b.name = "box";
+    b.role = BodyRole::Virtual;
+    b.shape = Shape::box(half);
+    b.mass_properties = massProperties(b.shape, mass);
+    b.pose = pose;
+    b.linear_velocity = v;
+    b.angular_velocity = w;
+    return RigidBody::fromScene(b);
+}
+
+RigidBody ground() {
+    Body b;
+    b.name = "floor";
+    b.role = BodyRole::Real;
+    b.shape = Shape::box(Vec3(10, 10, 1));
+    b.pose = at(Vec3(0, 0, -1));
+    return RigidBody::fromScene(b);
+}
+
+// The four bottom corners of an axis-aligned box at the origin with half extents h (z = -h.z).
+std::vector<Vec3> bottomCorners(const Vec3& h) {
+    return {Vec3(-h.x(), -h.y(), -h.z()), Vec3(h.x(), -h.y(), -h.z()), Vec3(h.x(), h.y(), -h.z()),
+            Vec3(-h.x(), h.y(), -h.z())};
+}
+
+double normalSpeed(const RigidBody& a, const RigidBody& b, const Vec3& p, const Vec3& n) {
+    return (b.pointVelocity(p) - a.pointVelocity(p)).dot(n);
+}
+
+TEST(DynamicsPatchImpulse, FlatBoxLeavesAtRestitutionTimesItsSpeedWithoutTurning) {
+    const Vec3 h(0.3, 0.2, 0.1);
+    for (double e : {0.0, 0.5, 1.0}) {
+        RigidBody floor = ground();
+        RigidBody box = boxBody(h, 2.0, at(Vec3::Zero()), Vec3(0, 0, -3.0), Vec3::Zero());
+        const std::vector<Vec3> pts = bottomCorners(h);
+        const PatchImpulse imp = patchImpulse(floor, box, pts, Vec3(0, 0, -h.z()), Vec3::UnitZ(),
+                                              std::vector<double>(4, e), 0.5);
+        applyPatchImpulse(floor, box, pts, Vec3(0, 0, -h.z()), Vec3::UnitZ(), imp);
+        EXPECT_NEAR(box.velocity.z(), 3.0 * e, 1e-12) << "e = " << e;
+        EXPECT_NEAR(box.velocity.head<2>().norm(), 0.0, 1e-12) << "e = " << e;
+        EXPECT_LT(box.angularVelocity().norm(), 1e-12) << "e = " << e;
+        double total = 0.0;
+        for (double x : imp.normal) total += x;
+        EXPECT_NEAR(total, 2.0 * 3.0 * (1.0 + e), 1e-12) << "m (1 + e) v, e = " << e;
+    }
+}
+
+TEST(DynamicsPatchImpulse, RockingPlateIsStoppedAtTheApproachingCornerAndNothingIsPulled) {
+    // A thin plate turning about its long axis: one long edge approaches the floor, the other rises;
+    // its centroid is still, so a centroid impulse does nothing. Plastic (e = 0), with friction.
+    const Vec3 h(0.3, 0.2, 0.01);
+    RigidBody floor = ground();
+    RigidBody plate = boxBody(h, 0.5, at(Vec3::Zero()), Vec3::Zero(), Vec3(2.0, 0.0, 0.0));
+    const std::vector<Vec3> pts = bottomCorners(h);
+    for (const Vec3& p : pts) ASSERT_NE(normalSpeed(floor, plate, p, Vec3::UnitZ()), 0.0);
+    const PatchImpulse imp = patchImpulse(floor, plate, pts, Vec3(0, 0, -h.z()), Vec3::UnitZ(),
+                                          std::vector<double>(4, 0.0), 0.6);
+    applyPatchImpulse(floor, plate, pts, Vec3(0, 0, -h.z()), Vec3::UnitZ(), imp);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const double u = normalSpeed(floor, plate, pts[i], Vec3::UnitZ());
+        EXPECT_GE(imp.normal[i], 0.0) << "point " << i << " pulled";
+        EXPECT_GE(u, -1e-9) << "point " << i << " still approaches";
+        if (imp.normal[i] > 1e-12) {
+            EXPECT_NEAR(u, 0.0, 1e-9) << "a pushing point ends at its target, point " << i;
+        }
+    }
+    // The rotation about the approaching edge stops: every corner ends at or above zero normal speed
+    // and the plate no longer turns into the floor.
+    EXPECT_LT(plate.angularVelocity().x(), 2.0);
+}
+
+// Frictionless patch LCP: w = M x + q >= 0, x >= 0, x.w = 0 with q_i = u_i - target_i. Solved by
+// trying every active set (N <= 4): an independent answer for the patch impulse.
+Eigen::VectorXd enumerateLcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q) {
+    const int n = static_cast<int>(q.size());
+    Eigen::VectorXd best;
+    double best_norm = std::numeric_limits<double>::infinity();
+    for (int mask = 0; mask < (1 << n); ++mask) {
+        std::vector<int> act;
+        for (int i = 0; i < n; ++i)
+            if (mask >> i & 1) act.push_back(i);
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+        if (!act.empty()) {
+            Eigen::MatrixXd ma(act.size(), act.size());
+            Eigen::VectorXd qa(act.size());
+            for (std::size_t r = 0; r < act.size(); ++r) {
+                qa(static_cast<Eigen::Index>(r)) = -q(act[r]);
+                for (std::size_t c = 0; c < act.size(); ++c) ma(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = m(act[r], act[c]);
+            }
+            const Eigen::VectorXd xa = ma.completeOrthogonalDecomposition().solve(qa);
+            for (std::size_t r = 0; r < act.size(); ++r) x(act[r]) = xa(static_cast<Eigen::Index>(r));
+        }
+        const Eigen::VectorXd w = m * x + q;
+        if (x.minCoeff() < -1e-9 || w.minCoeff() < -1e-9) continue;
+        if (std::abs(x.dot(w)) > 1e-9) continue;
+        if (x.norm() < best_norm) {
+            best_norm = x.norm();
+            best = x;
+        }
+    }
+    return best;
+}
+
+TEST(DynamicsPatchImpulse, FrictionlessPatchesMatchTheEnumeratedComplementaritySolution) {
+    std::mt19937_64 rng(2201);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int checked = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        const Vec3 h(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
+        RigidBody a = boxBody(Vec3(1, 1, 1), 3.0, at(Vec3(0, 0, -1.0 - h.z())), Vec3(u(rng), u(rng), u(rng)) * 0.5,
+                              Vec3(u(rng), u(rng), u(rng)));
+        RigidBody b = boxBody(h, 1.0 + std::abs(u(rng)), at(Vec3::Zero()), Vec3(u(rng), u(rng), -1.0 + 0.5 * u(rng)),
+                              Vec3(u(rng), u(rng), u(rng)) * 3.0);
+        const int count = 2 + static_cast<int>(3 * std::abs(u(rng))) % 3;   // 2..4 corners
+        std::vector<Vec3> pts = bottomCorners(h);
+        pts.resize(static_cast<std::size_t>(count));
+        std::vector<double> e(pts.size());
+        for (double& x : e) x = std::abs(u(rng));
+        const Vec3 n = Vec3::UnitZ();
+        // The LCP of the same impact, assembled independently from the bodies' collision matrices.
+        Eigen::MatrixXd m(count, count);
+        Eigen::VectorXd q(count);
+        for (int i = 0; i < count; ++i) {
+            const double u0 = normalSpeed(a, b, pts[static_cast<std::size_t>(i)], n);
+            q(i) = u0 - (u0 < 0.0 ? -e[static_cast<std::size_t>(i)] * u0 : 0.0);
+            for (int j = 0; j < count; ++j) {
+                // Relative normal velocity change at i per unit normal impulse at j (on B, -on A).
+                RigidBody a2 = a, b2 = b;
+                a2.applyImpulse(-n, pts[static_cast<std::size_t>(j)]);
+                b2.applyImpulse(n, pts[static_cast<std::size_t>(j)]);
+                m(i, j) = normalSpeed(a2, b2, pts[static_cast<std::size_t>(i)], n) - u0;
+            }
+        }
+        bool any_approach = false;
+        for (int i = 0; i < count; ++i) any_approach = any_approach || normalSpeed(a, b, pts[static_cast<std::size_t>(i)], n) < 0.0;
+        if (!any_approach) continue;
+        const Eigen::VectorXd expect = enumerateLcp(m, q);
+        ASSERT_GT(expect.size(), 0) << "trial " << trial << ": no LCP solution found";
+        const PatchImpulse imp = patchImpulse(a, b, pts, Vec3(0, 0, -h.z()), n, e, 0.0);
+        // Compare the resulting normal velocities (unique even where the impulses are not).
+        const Eigen::VectorXd w_expect = m * expect + q;
+        Eigen::VectorXd got(count);
+        for (int i = 0; i < count; ++i) got(i) = imp.normal[static_cast<std::size_t>(i)];
+        const Eigen::VectorXd w_got = m * got + q;
+        for (int i = 0; i < count; ++i)
+            EXPECT_NEAR(w_got(i), w_expect(i), 1e-6 * (1.0 + q.cwiseAbs().maxCoeff()))
+                << "trial " << trial << ", point " << i << " of " << count;
+        ++checked;
+    }
+    EXPECT_GT(checked, 100);
+}
+
+TEST(DynamicsPatchImpulse, OnePointAgreesWithTheSinglePointModel) {
+    std::mt19937_64 rng(7);
+    for (int trial = 0; trial < 50; ++trial) {
+        RigidBody a = randomBody(rng), b = randomBody(rng);
+        const Vec3 p = 0.5 * (a.com + b.com);
+        const Vec3 n = (b.com - a.com).normalized();
+        if (!((b.pointVelocity(p) - a.pointVelocity(p)).dot(n) < 0.0)) continue;
+        const ImpulseResult single = newtonCoulombImpulse(a, b, p, n, 0.4, 0.0);
+        const PatchImpulse patch = patchImpulse(a, b, {p}, p, n, {0.4}, 0.0);
+        EXPECT_NEAR(patch.normal[0], single.impulse.dot(n), 1e-9 * (1.0 + std::abs(single.impulse.dot(n)))) << "trial " << trial;
+    }
+}
+
+}  // namespace
+}  // namespace vroc::native::test

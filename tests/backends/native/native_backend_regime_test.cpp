@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// The two regimes (docs/native-dynamics.md, "Two regimes"): boxes dropped tumbling onto the floor
+// land on corners and edges and tip over faces. In the speculative regime the faces beyond an edge
+// enter the solve as speculative points, with no protection tick: every frame, no corner of any box
+// may be deeper below the floor than the collision distance (the boxes' corners from their poses:
+// an independent ruler), nothing is repaired by moving bodies, and the boxes come to rest.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "native_test_scenes.h"
+
+namespace vroc::native::test {
+namespace {
+
+struct Dropped {
+    Scene scene;
+    std::vector<int> boxes;
+    std::vector<Vec3> half;
+};
+
+Dropped tumblingBoxes(double cd, std::uint64_t seed) {
+    Dropped d;
+    d.scene = bareScene(cd);
+    const int mat = addMaterial(d.scene, 0.1, 0.5);
+    addFloor(d.scene, mat, 20.0);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int i = 0; i < 6; ++i) {
+        const Vec3 h(0.05 + 0.05 * std::abs(u(rng)), 0.05 + 0.05 * std::abs(u(rng)), 0.02 + 0.08 * std::abs(u(rng)));
+        const Quat q(Eigen::AngleAxisd(3.0 * u(rng), Vec3(u(rng), u(rng), u(rng)).normalized()));
+        d.boxes.push_back(addBody(d.scene, "box" + std::to_string(i), Shape::box(h),
+                                  at(Vec3(0.6 * (i % 3) - 0.6, 0.6 * (i / 3) - 0.3, 0.4 + 0.2 * std::abs(u(rng))), q), mat,
+                                  false, 1.0));
+        d.half.push_back(h);
+    }
+    return d;
+}
+
+// [m] how far the deepest corner of box k lies below the floor's top (z = 0); <= 0 if none does.
+double depthBelowFloor(const BodyState& st, const Vec3& h) {
+    double lowest = 1e9;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3 corner((c & 1 ? 1 : -1) * h.x(), (c & 2 ? 1 : -1) * h.y(), (c & 4 ? 1 : -1) * h.z());
+        lowest = std::min(lowest, st.pose.apply(corner).z());
+    }
+    return -lowest;
+}
+
+TEST(NativeRegimes, TumblingBoxesLandWithinTheCollisionDistanceAndRest) {
+    const double cd = 1e-3;
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+        for (TouchingRegime regime : {TouchingRegime::Speculative, TouchingRegime::Protected}) {
+            const Dropped d = tumblingBoxes(cd, seed);
+            NativeSettings ns;
+            ns.touching = regime;
+            auto be = makeBackend(d.scene, ns);
+            const char* name = regime == TouchingRegime::Speculative ? "speculative" : "protected";
+            double deepest = 0.0;
+            for (int f = 0; f < 180; ++f) {
+                be->stepFrame(d.scene.frame_dt);
+                for (std::size_t k = 0; k < d.boxes.size(); ++k)
+                    deepest = std::max(deepest, depthBelowFloor(be->bodyState(d.boxes[k]), d.half[k]));
+            }
+            EXPECT_LE(deepest, cd) << name << ", seed " << seed;
+            EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u) << name << ", seed " << seed;
+            for (int b : d.boxes)
+                EXPECT_LT(be->bodyState(b).linear_velocity.norm(), 1e-3) << name << ", seed " << seed << ", body " << b;
+        }
+    }
+}
+
+TEST(NativeRegimes, HeldBodiesNeedNoStepsBetweenTheirTicks) {
+    // Once the boxes rest, the speculative regime takes one internal step per sub-step, the
+    // protected one at least as many.
+    const Dropped d = tumblingBoxes(1e-3, 4);
+    double steps[2] = {0.0, 0.0};
+    int k = 0;
+    for (TouchingRegime regime : {TouchingRegime::Speculative, TouchingRegime::Protected}) {
+        NativeSettings ns;
+        ns.touching = regime;
+        auto be = makeBackend(d.scene, ns);
+        for (int f = 0; f < 180; ++f) be->stepFrame(d.scene.frame_dt);
+        const double before = be->statistics().at("internal_steps");
+        for (int f = 0; f < 60; ++f) be->stepFrame(d.scene.frame_dt);
+        steps[k++] = be->statistics().at("internal_steps") - before;
+    }
+    EXPECT_EQ(steps[0], 60.0) << "speculative: one step per frame at rest";
+    EXPECT_GE(steps[1], steps[0]);
+}
+
+}  // namespace
+}  // namespace vroc::native::test
