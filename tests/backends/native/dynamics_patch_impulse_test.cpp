@@ -179,7 +179,7 @@ TEST(DynamicsPatchImpulse, OnePointAgreesWithTheSinglePointModel) {
         const Vec3 n = (b.com - a.com).normalized();
         if (!((b.pointVelocity(p) - a.pointVelocity(p)).dot(n) < 0.0)) continue;
         const ImpulseResult single = newtonCoulombImpulse(a, b, p, n, 0.4, 0.0);
-        const PatchImpulse patch = patchImpulse(a, b, {p}, p, n, {0.4}, 0.0);
+        const PatchImpulse patch = patchImpulse(a, b, std::vector<Vec3>{p}, p, n, std::vector<double>{0.4}, 0.0);
         EXPECT_NEAR(patch.normal[0], single.impulse.dot(n), 1e-9 * (1.0 + std::abs(single.impulse.dot(n)))) << "trial " << trial;
     }
 }

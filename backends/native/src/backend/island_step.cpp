@@ -16,8 +16,6 @@ namespace {
 // A point of a new manifold takes the warm-start impulse of a cached point closer than this
 // fraction of the smaller body's outer radius (in A's frame).
 constexpr double kMatchFraction = 0.05;
-// [m/s] approach speed below which a touching point is resting, not colliding (manifoldCollision).
-constexpr double kRestingNoise = 1e-4;
 
 // One island's contact phase, computed on local copies (so islands can run on any worker).
 struct IslandSolve {
@@ -332,9 +330,7 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
         restitution.push_back(plastic ? 0.0 : m.restitution);
         fastest = std::max(fastest, in);
     }
-    // A patch whose points approach slower than this is at rest up to rounding and the drift's
-    // second-order terms: the contact phase holds it (it sinks by at most kRestingNoise h / 2).
-    if (points.empty() || !(fastest > kRestingNoise)) return false;
+    if (points.empty() || !(fastest > 0.0)) return false;
     // A resting patch (held by the last solve) approaching slower than gravity closes in a tick is
     // stopped plastically at its touching centroid, one impulse as in issue 9 (a pile's patches,
     // every tick); a faster one (an impact, a rocking plate) is resolved over its points.

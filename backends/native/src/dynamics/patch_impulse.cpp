@@ -131,8 +131,8 @@ bool PatchImpulse::any() const {
     return !tangent.isZero(0.0) || std::any_of(normal.begin(), normal.end(), [](double x) { return x != 0.0; });
 }
 
-PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, const std::vector<Vec3>& points,
-                          const Vec3& centroid, const Vec3& n, const std::vector<double>& restitution,
+PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<const Vec3> points,
+                          const Vec3& centroid, const Vec3& n, std::span<const double> restitution,
                           double friction) {
     PatchImpulse out;
     const int count = static_cast<int>(points.size());
@@ -230,7 +230,7 @@ PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, const std::vec
     return out;
 }
 
-void applyPatchImpulse(RigidBody& a, RigidBody& b, const std::vector<Vec3>& points, const Vec3& centroid,
+void applyPatchImpulse(RigidBody& a, RigidBody& b, std::span<const Vec3> points, const Vec3& centroid,
                        const Vec3& n, const PatchImpulse& imp) {
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (imp.normal[i] == 0.0) continue;

@@ -9,6 +9,7 @@
 // For a single point the answer is the coupled sticking / sliding impulse of newton_coulomb.h.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "dynamics/impulse_result.h"
@@ -27,12 +28,12 @@ struct PatchImpulse {
 /// centroid `centroid`. `restitution` per point: the approach speed a point leaves with, as a
 /// fraction (0 for a plastic or resting point). Bodies are read, not changed. Points that separate
 /// get no impulse unless the others would make them approach.
-PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, const std::vector<Vec3>& points,
-                          const Vec3& centroid, const Vec3& n, const std::vector<double>& restitution,
+PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<const Vec3> points,
+                          const Vec3& centroid, const Vec3& n, std::span<const double> restitution,
                           double friction);
 
 /// Applies `imp` to both bodies (A gets the opposite impulses).
-void applyPatchImpulse(RigidBody& a, RigidBody& b, const std::vector<Vec3>& points, const Vec3& centroid,
+void applyPatchImpulse(RigidBody& a, RigidBody& b, std::span<const Vec3> points, const Vec3& centroid,
                        const Vec3& n, const PatchImpulse& imp);
 
 }  // namespace vroc::native
