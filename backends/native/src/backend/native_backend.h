@@ -111,8 +111,10 @@ private:
         return infinite_mass_[static_cast<std::size_t>(body)] ||
                (held_[static_cast<std::size_t>(body)] != 0 && drift_until_[static_cast<std::size_t>(body)] >= t);
     }
-    /// Fills m's points (at most four of the patch), their gaps and the centroid of what touches.
-    static void setManifoldPoints(const ContactPatch& patch, const ProximityResult& r, double cd, ContactManifold& m);
+    /// Fills m's points (at most four of the patch; with `speculative`, four touching and four
+    /// speculative ones with their gaps) and the centroid of what touches.
+    static void setManifoldPoints(const ContactPatch& patch, const ProximityResult& r, double cd, bool speculative,
+                                  ContactManifold& m);
     /// Narrow phase of one pair at time t (its bodies must be valid at t). Pure in the pair.
     PairSample samplePair(int pair_index);
     /// Samples the pairs (bodies brought to t first), in parallel above a few pairs.

@@ -146,7 +146,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
             m.normal = r.normal;
             m.distance = r.distance;
             const ContactPatch patch = partPatch(sa.parts[i], pa, sb.parts[j], pb, cache, r, cd, reach);
-            setManifoldPoints(patch, r, cd, m);
+            setManifoldPoints(patch, r, cd, reach > cd, m);
             m.restitution = mat.restitution;
             m.friction = mat.friction;
             out.manifolds.push_back(std::move(m));
@@ -178,8 +178,18 @@ double NativeBackend::patchReach(const PairState& ps) const {
     return cd + (std::isfinite(reach) && reach > 0.0 ? reach : 0.0);
 }
 
-void NativeBackend::setManifoldPoints(const ContactPatch& patch, const ProximityResult& r, double cd,
+void NativeBackend::setManifoldPoints(const ContactPatch& patch, const ProximityResult& r, double cd, bool speculative,
                                       ContactManifold& m) {
+    // Without speculative contact every point of the patch counts as touching, as in issue 9: the
+    // polygon's four extremes, no gaps (every point at the closest distance), the area centroid.
+    if (!speculative) {
+        const std::vector<std::size_t> keep = reduceContactPointIndices(patch.points, r.normal);
+        m.points.reserve(keep.size());
+        for (std::size_t k : keep) m.points.push_back(patch.points[k]);
+        if (m.points.empty()) m.points.push_back(patch.centroid);
+        m.centroid = patch.centroid;
+        return;
+    }
     // What touches keeps the polygon's extremes (at most four: the block solve's symmetric split);
     // the speculative points keep their own four, the deepest first (Bullet's and Box2D's rule), so
     // a tipping body's far vertices are never traded for one more point of the face it rests on.
@@ -198,12 +208,12 @@ void NativeBackend::setManifoldPoints(const ContactPatch& patch, const Proximity
         for (std::size_t k : reduceContactPointIndices(pts, r.normal, side == 0 ? std::vector<double>{} : gaps))
             keep.push_back(index[k]);
     }
-    bool speculative = false;
+    bool beyond = false;   // some point is beyond the collision distance
     for (std::size_t k : keep) {
         m.points.push_back(patch.points[k]);
         const double gap = k < patch.gaps.size() ? patch.gaps[k] : r.distance;
         m.point_gap.push_back(gap);
-        speculative = speculative || !(gap < cd);
+        beyond = beyond || !(gap < cd);
     }
     m.centroid = patch.centroid;
     if (m.points.empty()) {
@@ -212,7 +222,7 @@ void NativeBackend::setManifoldPoints(const ContactPatch& patch, const Proximity
         return;
     }
     // The collision phase acts at the centroid of what touches now, never at a speculative point.
-    if (speculative) {
+    if (beyond) {
         Vec3 sum = Vec3::Zero();
         int touching = 0;
         for (std::size_t k = 0; k < m.points.size(); ++k)

@@ -292,7 +292,8 @@ ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexM
         c += cr * (out[k] + out[(k + 1) % out.size()]);
         mean += out[k];
         patch.points.push_back(to3(out[k]));
-        patch.gaps.push_back(pieceHeight(pb, out[k], mid, u, w, n) - pieceHeight(pa, out[k], mid, u, w, n));
+        if (reach > tolerance)   // only speculative contact reads the gaps
+            patch.gaps.push_back(pieceHeight(pb, out[k], mid, u, w, n) - pieceHeight(pa, out[k], mid, u, w, n));
     }
     mean /= static_cast<double>(out.size());
     // Area centroid for a polygon; the mean for a segment, a point or a degenerate sliver.

@@ -16,7 +16,7 @@ struct ContactPatch {
     std::vector<Vec3> points;     ///< polygon (CCW about normal) or segment or single point
     /// [m] per point: the separation of the two pieces there along the normal (B's surface minus
     /// A's). Equal to the closest distance for parallel faces; larger at the far end of a tilted
-    /// face that a speculative tolerance let in.
+    /// face that a speculative tolerance let in. Filled only for speculative contact (a reach).
     std::vector<double> gaps;
     Vec3 centroid = Vec3::Zero(); ///< area centroid of the polygon (segment midpoint, the point)
 };
