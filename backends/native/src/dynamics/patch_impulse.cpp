@@ -23,6 +23,27 @@ using BlockVector = Eigen::Matrix<double, kMaxPoints, 1>;
 using SubMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxPoints, kMaxPoints>;
 using SubVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxPoints, 1>;
 
+// The free points' subsystem M_ff z_f = -q_f solved with `Decomposition` (its answer scattered back
+// to all points, zero elsewhere); `k` returns the free count and `idx` their indices.
+template <class Decomposition>
+BlockVector solveOnFreeSet(const Block& m, const BlockVector& q, const std::array<bool, kMaxPoints>& free, int count,
+                           int& k, std::array<int, kMaxPoints>& idx) {
+    k = 0;
+    for (int i = 0; i < count; ++i)
+        if (free[static_cast<std::size_t>(i)]) idx[static_cast<std::size_t>(k++)] = i;
+    SubMatrix mf(k, k);
+    SubVector qf(k);
+    for (int r = 0; r < k; ++r) {
+        qf(r) = -q(idx[static_cast<std::size_t>(r)]);
+        for (int c = 0; c < k; ++c) mf(r, c) = m(idx[static_cast<std::size_t>(r)], idx[static_cast<std::size_t>(c)]);
+    }
+    BlockVector z = BlockVector::Zero();
+    if (k == 0) return z;
+    const SubVector zf = Decomposition(mf).solve(qf);
+    for (int r = 0; r < k; ++r) z(idx[static_cast<std::size_t>(r)]) = zf(r);
+    return z;
+}
+
 // The frictionless patch problem is the LCP w = M y + q >= 0, y >= 0, y.w = 0 with M symmetric
 // positive semi-definite: the optimality conditions of min 1/2 y'My + q'y over y >= 0. Solved
 // exactly by the active-set method of Lawson and Hanson's NNLS (1974, ch. 23) applied to that
@@ -51,17 +72,7 @@ BlockVector solveNormalLcp(const Block& m_in, const BlockVector& q, int count) {
         for (int inner = 0; inner < 4 * kMaxPoints; ++inner) {
             int k = 0;
             std::array<int, kMaxPoints> idx{};
-            for (int i = 0; i < count; ++i)
-                if (free[static_cast<std::size_t>(i)]) idx[static_cast<std::size_t>(k++)] = i;
-            SubMatrix mf(k, k);
-            SubVector qf(k);
-            for (int r = 0; r < k; ++r) {
-                qf(r) = -q(idx[static_cast<std::size_t>(r)]);
-                for (int c = 0; c < k; ++c) mf(r, c) = m(idx[static_cast<std::size_t>(r)], idx[static_cast<std::size_t>(c)]);
-            }
-            const SubVector zf = Eigen::LDLT<SubMatrix>(mf).solve(qf);
-            BlockVector z = BlockVector::Zero();
-            for (int r = 0; r < k; ++r) z(idx[static_cast<std::size_t>(r)]) = zf(r);
+            const BlockVector z = solveOnFreeSet<Eigen::LDLT<SubMatrix>>(m, q, free, count, k, idx);
             bool positive = true;
             for (int r = 0; r < k; ++r) positive = positive && z(idx[static_cast<std::size_t>(r)]) > 0.0;
             if (positive || !z.allFinite()) {
@@ -88,20 +99,11 @@ BlockVector solveNormalLcp(const Block& m_in, const BlockVector& q, int count) {
     // for the flat box's symmetric split), kept if it stays non-negative.
     int k = 0;
     std::array<int, kMaxPoints> idx{};
-    for (int i = 0; i < count; ++i)
-        if (free[static_cast<std::size_t>(i)]) idx[static_cast<std::size_t>(k++)] = i;
-    if (k == 0) return y;
-    SubMatrix mf(k, k);
-    SubVector qf(k);
-    for (int r = 0; r < k; ++r) {
-        qf(r) = -q(idx[static_cast<std::size_t>(r)]);
-        for (int c = 0; c < k; ++c) mf(r, c) = m_in(idx[static_cast<std::size_t>(r)], idx[static_cast<std::size_t>(c)]);
-    }
-    const SubVector exact = Eigen::CompleteOrthogonalDecomposition<SubMatrix>(mf).solve(qf);
-    if (!exact.allFinite() || exact.minCoeff() < 0.0) return y;
-    BlockVector out = BlockVector::Zero();
-    for (int r = 0; r < k; ++r) out(idx[static_cast<std::size_t>(r)]) = exact(r);
-    return out;
+    const BlockVector exact = solveOnFreeSet<Eigen::CompleteOrthogonalDecomposition<SubMatrix>>(m_in, q, free, count, k, idx);
+    if (k == 0 || !exact.allFinite()) return y;
+    for (int r = 0; r < k; ++r)
+        if (exact(idx[static_cast<std::size_t>(r)]) < 0.0) return y;
+    return exact;
 }
 
 struct Side {
