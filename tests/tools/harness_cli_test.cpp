@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: MIT
 // `vroc check/compare/sweep/report` end to end through the built program, on the Bullet backend
-// (skipped when this build has no Bullet), plus the exit-code rule for "native".
-#include <gtest/gtest.h>
-
+// (skipped when this build has no Bullet), plus the exit-code rule for "native" and native's
+// required stress targets.
 #include <fstream>
+#include <set>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "harness_test_backends.h"
 #include "subprocess.h"
 #include "test_scenes.h"
 #include "vroc/harness/check.h"
+#include "vroc/harness/check_suite.h"
 #include "vroc/harness/metrics_document.h"
 
 namespace vroc::harness {
@@ -63,6 +66,34 @@ TEST(HarnessCli, ExitCodeOneOnlyWhenNativeFailsARequiredCheck) {
     o.only = {"ballistic"};
     EXPECT_EQ(runCheckSuite(selectBackends("test-exact,native", {}), o).exitCode(), 1);
     EXPECT_EQ(runCheckSuite(selectBackends("test-euler", {}), o).exitCode(), 0);
+}
+
+// Issue 22: native's stress targets are required, so a regression fails the default suite. The
+// stress section on native alone (every stress scene; about 20 s on one core, 14 s on two).
+TEST(HarnessCli, NativeMeetsEveryRequiredStressTarget) {
+    const fs::path dir = test::freshTempDir("harness-cli-stress");
+    std::vector<std::string> args = {"check",        "--stress",
+                                     "--backends",   "native",
+                                     "--scenes-dir", (fs::path(VROC_SOURCE_DIR) / "scenes" / "stress").string(),
+                                     "--out",        "out"};
+    for (const std::string& id : stressScenarioIds()) {
+        args.push_back("--only");
+        args.push_back(id);
+    }
+    std::string command = "vroc";
+    for (const std::string& a : args) command += " " + a;
+    const auto r = test::runVroc(args, dir);
+    ASSERT_EQ(r.exit_code, 0) << "reproduce: " << command << "\n" << r.out << r.err;
+    const Json doc = readDocument(dir / "out" / "metrics.json");
+    EXPECT_EQ(doc["results"]["required_failures_native"].get<int>(), 0);
+    // Every stress scene ran, each with required targets that native passed.
+    std::set<std::string> scenes;
+    for (const Json& c : doc["results"]["checks"])
+        if (c["required_for_native"].get<bool>()) {
+            scenes.insert(c["scenario"].get<std::string>());
+            EXPECT_TRUE(c["results"]["native"]["pass"].get<bool>()) << c.dump();
+        }
+    EXPECT_EQ(scenes.size(), stressScenarioIds().size()) << r.out;
 }
 
 TEST(HarnessCli, CompareThenReportOnBullet) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The stress section of `vroc check` (issue 9): the scenario list built from the committed
-// scenes/stress files, its metrics on synthetic traces against hand values, and one scene run
-// through runCheckSuite on the closed-form test backend.
+// The stress section of `vroc check` (issues 9 and 22): the scenario list built from the committed
+// scenes/stress files, its metrics on synthetic traces against hand values, one scene run through
+// runCheckSuite on the closed-form test backend, and the verdict on a failing required metric.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,8 +58,30 @@ TEST(HarnessStress, ListHasTheIssueScenesWithTheirFrameStepsAndTargets) {
         EXPECT_EQ(all[i].duration, want[i].second);
         const CheckMetric& pen = metric(all[i], all[i].id + ".penetration");
         EXPECT_EQ(pen.tolerance, 1e-3) << all[i].id;   // every file's collision_distance
-        for (const CheckMetric& m : all[i].metrics) EXPECT_FALSE(m.required_for_native) << m.id;
+        EXPECT_TRUE(pen.required_for_native) << pen.id;
+        // Issues 9 and 22: zero penetration_recovered, required; position_corrections reported.
+        const CheckMetric& recovered = metric(all[i], all[i].id + ".penetration-recovered");
+        EXPECT_EQ(recovered.expected, 0);
+        EXPECT_EQ(recovered.tolerance, 0);
+        EXPECT_TRUE(recovered.required_for_native) << recovered.id;
+        const CheckMetric& corrections = metric(all[i], all[i].id + ".position-corrections");
+        EXPECT_FALSE(corrections.judged());
+        EXPECT_FALSE(corrections.required_for_native);
+        // Required exactly where the tolerance comes from physics or the issue: every judged metric;
+        // what is reported only is never required.
+        for (const CheckMetric& m : all[i].metrics) EXPECT_EQ(m.required_for_native, m.judged()) << m.id;
     }
+    // The issue's tolerances on the required targets.
+    const auto tolerance = [&](const std::string& s, const std::string& m) {
+        const CheckMetric& cm = metric(scenario(all, s), s + "." + m);
+        EXPECT_TRUE(cm.required_for_native) << cm.id;
+        return cm.tolerance;
+    };
+    EXPECT_EQ(tolerance("stress-pyramid10", "displacement"), 1e-3);
+    EXPECT_EQ(tolerance("stress-pyramid20", "displacement"), 1e-3);
+    EXPECT_EQ(tolerance("stress-stack20_ratio10", "top-drift-xy"), 1e-2);
+    EXPECT_EQ(tolerance("stress-stack20_ratio10", "top-drift-z"), 1e-2);
+    EXPECT_EQ(tolerance("stress-plank", "max-speed-last-1s"), 1e-3);
     EXPECT_DOUBLE_EQ(scenario(all, "stress-simbenchmark666").frame_dt, 0.01);
     EXPECT_DOUBLE_EQ(scenario(all, "stress-plank").frame_dt, 1.0 / 60);
     EXPECT_EQ(stressScenarioIds().size(), want.size());
@@ -140,7 +162,7 @@ TEST(HarnessStress, PlankRunsAfterTheAnalyticRowsWithTheFreeFallSpeed) {
     o.only = {"ballistic", "stress-plank"};
     const CheckSuiteResult result = runCheckSuite(selectBackends("test-exact", {}), o);
     const std::vector<CheckRow>& checks = result.rows;
-    ASSERT_EQ(checks.size(), 4u);   // ballistic x2, then plank penetration and speed
+    ASSERT_EQ(checks.size(), 6u);  // ballistic x2, then plank penetration, speed, recovered, corrections
     EXPECT_EQ(checks[0].scenario, "ballistic");
     EXPECT_EQ(checks[3].metric.id, "stress-plank.max-speed-last-1s");
     // No contact in this backend: plank and box fall from rest for 5 s; largest speed g t = 49.05 m/s.
@@ -152,7 +174,7 @@ TEST(HarnessStress, PlankRunsAfterTheAnalyticRowsWithTheFreeFallSpeed) {
     // A stress id in --only turns the section on by itself; an unknown one is an input error.
     o.stress = false;
     o.only = {"stress-plank"};
-    EXPECT_EQ(runCheckSuite(selectBackends("test-exact", {}), o).rows.size(), 2u);
+    EXPECT_EQ(runCheckSuite(selectBackends("test-exact", {}), o).rows.size(), 4u);
     o.only = {"stress-nope"};
     EXPECT_THROW(runCheckSuite(selectBackends("test-exact", {}), o), InputError);
 }
@@ -176,6 +198,80 @@ TEST(HarnessStress, UnjudgedMetricPrintsInfoAndNullTolerance) {
     EXPECT_NEAR(speed.cells[0].measured, 9.81 * 3, 1e-9);
     const std::string table = checkTableText(result);
     EXPECT_NE(table.find("info"), std::string::npos) << table;
+    // The test backend keeps no "test-exact.position_corrections": measured null, not judged.
+    const CheckRow& corrections = result.rows[3];
+    ASSERT_EQ(corrections.metric.id, "stress-bin_spheres100.position-corrections");
+    EXPECT_TRUE(std::isnan(corrections.cells[0].measured));
+    EXPECT_FALSE(corrections.cells[0].pass.has_value());
+    EXPECT_TRUE(doc["results"]["checks"][3]["results"]["test-exact"]["measured"].is_null());
+    // It counts no penetration_recovered: 0, a pass.
+    ASSERT_EQ(result.rows[2].metric.id, "stress-bin_spheres100.penetration-recovered");
+    EXPECT_EQ(result.rows[2].cells[0].measured, 0);
+    EXPECT_EQ(result.rows[2].cells[0].pass, true);
+}
+
+TEST(HarnessStress, CountMetricsReadTheRunsWarningsAndStatistics) {
+    const auto all = stressScenarios(kScenes, {"stress-plank"});
+    const CheckScenario& s = all.at(0);
+    const Scene sc = s.build();
+    RunTrace t = restingTrace(sc, 2, s.frame_dt);
+    const CheckMetric& recovered = metric(s, "stress-plank.penetration-recovered");
+    const CheckMetric& corrections = metric(s, "stress-plank.position-corrections");
+    // Nothing counted: no recovery; no statistic of that name: not reported.
+    t.backend = "native";
+    EXPECT_EQ(recovered.measure(sc, t), 0);
+    EXPECT_TRUE(std::isnan(corrections.measure(sc, t)));
+    // The run's counted warnings and its own statistic at the end.
+    t.warnings = {{"penetration_recovered", 3}, {"internal_step_cap", 5}};
+    t.statistics = {{"native.position_corrections", 42}, {"position_corrections", 7}};
+    EXPECT_EQ(recovered.measure(sc, t), 3);
+    EXPECT_EQ(corrections.measure(sc, t), 42);
+    // Another backend's run: its own prefix only, never native's.
+    t.backend = "bullet";
+    EXPECT_TRUE(std::isnan(corrections.measure(sc, t)));
+}
+
+// A cell of `metric` measured as `measured`, judged as the check driver does.
+CheckCell judgedCell(const CheckMetric& m, double measured) {
+    CheckCell c;
+    c.measured = measured;
+    if (m.judged()) c.pass = std::abs(measured - m.expected) <= m.tolerance;
+    return c;
+}
+
+TEST(HarnessStress, AFailingRequiredStressMetricOnNativeFailsTheVerdict) {
+    const auto all = stressScenarios(kScenes, {"stress-pyramid20"});
+    const CheckScenario& s = all.at(0);
+    const CheckMetric& displacement = metric(s, "stress-pyramid20.displacement");
+    const CheckMetric& recovered = metric(s, "stress-pyramid20.penetration-recovered");
+    const CheckMetric& corrections = metric(s, "stress-pyramid20.position-corrections");
+    BackendInfo native, bullet;
+    native.name = "native";
+    bullet.name = "bullet";
+    CheckSuiteResult r;
+    r.backends = {{&native, {}}, {&bullet, {}}};
+    r.wall_time_s = {0, 0};
+    const auto verdict = [&](const std::vector<CheckRow>& rows) {
+        r.rows = rows;
+        r.required_failures_native = requiredFailuresNative(r.backends, r.rows);
+        return r.exitCode();
+    };
+    // Both within the targets (0.8 mm, no recovery): exit 0.
+    EXPECT_EQ(verdict({{s.id, displacement, {judgedCell(displacement, 8e-4), judgedCell(displacement, 8e-4)}},
+                       {s.id, recovered, {judgedCell(recovered, 0), judgedCell(recovered, 0)}}}),
+              0);
+    // A box 1.1 mm from its start on native: exit 1, one failure.
+    EXPECT_EQ(verdict({{s.id, displacement, {judgedCell(displacement, 1.1e-3), judgedCell(displacement, 0)}}}), 1);
+    EXPECT_EQ(r.required_failures_native, 1);
+    EXPECT_EQ(checkDocument(r, "")["results"]["required_failures_native"].get<int>(), 1);
+    // One penetration_recovered on native: exit 1.
+    EXPECT_EQ(verdict({{s.id, recovered, {judgedCell(recovered, 1), judgedCell(recovered, 0)}}}), 1);
+    // The same failures on the other backend only: a result, not a verdict.
+    EXPECT_EQ(verdict({{s.id, displacement, {judgedCell(displacement, 0), judgedCell(displacement, 15)}},
+                       {s.id, recovered, {judgedCell(recovered, 0), judgedCell(recovered, 2)}}}),
+              0);
+    // A reported metric never fails it, whatever its value.
+    EXPECT_EQ(verdict({{s.id, corrections, {judgedCell(corrections, 1e6), judgedCell(corrections, NAN)}}}), 0);
 }
 
 }  // namespace

@@ -106,6 +106,16 @@ std::vector<CheckScenario> selectedScenarios(const CheckOptions& o, bool stress)
 
 }  // namespace
 
+int requiredFailuresNative(const std::vector<SelectedBackend>& backends, const std::vector<CheckRow>& rows) {
+    int failures = 0;
+    for (std::size_t b = 0; b < backends.size(); ++b) {
+        if (backends[b].info->name != kNative) continue;
+        for (const CheckRow& row : rows)
+            if (row.metric.required_for_native && row.cells.at(b).pass == false) ++failures;
+    }
+    return failures;
+}
+
 CheckSuiteResult runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& o, RunPool& pool) {
     CheckSuiteResult result;
     result.backends = backends;
@@ -129,15 +139,11 @@ CheckSuiteResult runCheckSuite(const std::vector<SelectedBackend>& backends, con
         for (const CheckMetric& cm : sc.metrics) result.rows.push_back({sc.id, cm, {}});
         for (std::size_t b = 0; b < backends.size(); ++b) {
             const CellRun run = cellRunFromJson(done[job++]);
-            for (std::size_t m = 0; m < sc.metrics.size(); ++m) {
-                const CheckCell& cell = run.cells[m];
-                result.rows[first + m].cells.push_back(cell);
-                if (cell.pass == false && sc.metrics[m].required_for_native && backends[b].info->name == kNative)
-                    ++result.required_failures_native;
-            }
+            for (std::size_t m = 0; m < sc.metrics.size(); ++m) result.rows[first + m].cells.push_back(run.cells[m]);
             result.wall_time_s[b] += run.seconds;
         }
     }
+    result.required_failures_native = requiredFailuresNative(backends, result.rows);
     result.execution = pool.execution();
     return result;
 }

@@ -31,7 +31,9 @@ struct CheckOptions {
 
 /// One metric measured on one backend.
 struct CheckCell {
-    double measured = NAN;         ///< in the metric's units; NaN: not run, or the run went non-finite
+    /// In the metric's units; NaN: not run, the run went non-finite, or the run does not record the
+    /// quantity (a statistic the backend does not keep: reported as "—").
+    double measured = NAN;
     std::optional<bool> pass;      ///< empty: reported, not judged (or not run)
     SceneSupport support;          ///< Unsupported: the scenario was not run on this backend
 };
@@ -57,6 +59,10 @@ struct CheckSuiteResult {
     /// 1 if a required-for-native check failed on native, else 0.
     int exitCode() const { return required_failures_native > 0 ? 1 : 0; }
 };
+
+/// The verdict behind exitCode(): how many cells of the backend named "native" fail a metric
+/// required for native (cells are in `backends` order).
+int requiredFailuresNative(const std::vector<SelectedBackend>& backends, const std::vector<CheckRow>& rows);
 
 /// Runs the suite, one pool job per (scenario, backend).
 CheckSuiteResult runCheckSuite(const std::vector<SelectedBackend>& backends, const CheckOptions& options, RunPool& pool);

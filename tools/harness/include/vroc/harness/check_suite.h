@@ -42,10 +42,11 @@ struct CheckScenario {
 /// The default set (< 2 min on one core for two backends), or the long set appended to it.
 std::vector<CheckScenario> checkScenarios(bool long_set);
 
-/// The stress section (issue 9): the committed dense-contact scenes `<scenes_dir>/<scene>.json`
-/// (scenes/stress/), ids "stress-<scene>", each at its file's frame_dt, with targets (not closed
-/// forms, none required for native). `only` non-empty: just those ids. Throws InputError naming
-/// the directory or file when one is missing (and the --scenes-dir option), or what loadScene throws.
+/// The stress section (issues 9 and 22): the committed dense-contact scenes
+/// `<scenes_dir>/<scene>.json` (scenes/stress/), ids "stress-<scene>", each at its file's frame_dt,
+/// with the issues' targets (not closed forms); those with a tolerance from physics or the issue
+/// are required for native. `only` non-empty: just those ids. Throws InputError naming the
+/// directory or file when one is missing (and the --scenes-dir option), or what loadScene throws.
 std::vector<CheckScenario> stressScenarios(const std::filesystem::path& scenes_dir,
                                            const std::vector<std::string>& only = {});
 
