@@ -1,12 +1,21 @@
 #!/usr/bin/env python3
-"""Dense-contact benchmark of issue 9: the native backend against Bullet on scenes/stress/.
+"""Dense-contact benchmark of issues 9 and 22: the native backend against Bullet, ODE and MuJoCo on scenes/stress/.
 
-For every stress scene and every backend configuration
+For every stress scene and every backend configuration (each reference at its own default plus a
+speed-accuracy ladder; every native configuration runs on one core, like the references)
 
-    native    vroc run ... --backend native --set native.threads=1   (one core, like Bullet)
-    bullet    vroc run ... --backend bullet --set bullet.substeps=1  (Bullet at its own default)
-    bullet4   vroc run ... --backend bullet --set bullet.substeps=4  (the project's 4 sub-steps)
-    bullet16  vroc run ... --backend bullet --set bullet.substeps=16 (for the equal-accuracy table)
+    native         vroc run ... --backend native --set native.threads=1   (native at its default)
+    native-sub2    ... native.threads=1 native.contact_substeps=2          (2 island ticks per frame)
+    native-sub4    ... native.threads=1 native.contact_substeps=4          (4 island ticks per frame)
+    native-it4     ... native.threads=1 native.contact_iterations=4        (4 contact sweeps, default 10)
+    native-shock0  ... native.threads=1 native.shock_iterations=0          (no shock propagation)
+    native-spec    ... native.threads=1 native.touching=speculative        (issue 22's experimental regime)
+    bullet         vroc run ... --backend bullet --set bullet.substeps=1  (Bullet at its own default)
+    bullet2        ... bullet.substeps=2
+    bullet4        ... bullet.substeps=4                                   (the project's 4 sub-steps)
+    bullet16       ... bullet.substeps=16                                  (for the equal-accuracy table)
+    ode            vroc run ... --backend ode                             (ODE at its default: quickstep, 1 step per frame)
+    mujoco         vroc run ... --backend mujoco                          (MuJoCo at its default: steps <= 2 ms)
 
 it runs `vroc run SCENE --duration D` --repeats times (medians are reported) and measures
 
@@ -29,23 +38,33 @@ it runs `vroc run SCENE --duration D` --repeats times (medians are reported) and
   closed, the pyramid's and stack's accuracy), and stillness at the end:
   translational kinetic energy sum(m v^2 / 2) and the largest speed bound |v| + |w| r_bound.
 
-Writes OUT/dense_contact.csv and OUT/dense_contact.md (a Markdown table plus the issue-9 targets
-judged for native, and the equal-accuracy table: the cheapest Bullet configuration whose creep
-(scenes that start at rest) or deepest penetration (the others) is no worse than native's).
+Every scene has one accuracy measure: creep for scenes that start at rest (pyramids, stacks),
+deepest penetration for the others. Writes OUT/dense_contact.csv and OUT/dense_contact.md (a
+Markdown table plus the issue-9 targets judged for native; the equal-accuracy table: the cheapest
+Bullet configuration whose accuracy measure is no worse than native's; and the Pareto front per
+scene: the configurations that no other one dominates, i.e. is at least as cheap in total step time
+and at least as accurate, and strictly better in one of the two (times within 10 %, PARETO_TIME_TIE,
+count as equal: the machine's run-to-run drift), and for native's default either
+"on the front" or the cheapest configuration that dominates it, with both pairs of numbers), and
+per scene OUT/pareto-SCENE.svg (gnuplot; .dat and .gp beside it): total step time (log) against the
+accuracy measure (log; values below 1 um, PARETO_FLOOR, count as equal and are drawn on it, marked
+"*"), one labelled point per configuration that finished, native's in one colour and each
+reference in its own, the front as a step line.
 `--scaling` instead runs scenes/stress/scaling_boxes{100,400,1000,4000}.json
 and writes OUT/scaling.csv (backend,bodies,wall_per_sim_s) and OUT/scaling.svg (log-log, gnuplot,
 with an N log N guide line).
 
+--backends picks configurations (default native,bullet,bullet4,bullet16); --ladder runs them all.
 Every vroc run gets --timeout seconds (the penetration compare --compare-timeout, default 4x); a
 run that takes longer is stopped (SIGTERM, then SIGKILL) and shows as "timeout". Only one
 simulation runs at a time.
 
 Usage:
-  python3 scripts/dense_contact_bench.py [--scenes NAME ...] [--backends native,bullet,bullet4,bullet16]
+  python3 scripts/dense_contact_bench.py [--scenes NAME ...] [--backends native,bullet,bullet4,bullet16 | --ladder]
         [--repeats 3] [--duration 10] [--timeout 120] [--compare-timeout S] [--max-bodies N] [--no-penetration]
         [--out DIR] [--vroc PATH | --build DIR] [--keep-runs]
   python3 scripts/dense_contact_bench.py --scaling [--duration 2] [--out DIR] ...
-Standard library only (gnuplot for the chart).
+Standard library only (gnuplot for the charts).
 """
 import argparse
 import csv
@@ -63,18 +82,31 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STRESS = os.path.join(ROOT, "scenes", "stress")
 
-# label -> (backend, --set assignments, text)
+# label -> (backend, --set assignments, text); --ladder runs them all, in this order.
 CONFIGS = {
     "native": ("native", ["native.threads=1"], "native (threads=1)"),
+    # The native ladder: one setting moved from the default each (docs/native-dynamics.md).
+    "native-sub2": ("native", ["native.threads=1", "native.contact_substeps=2"], "native (contact_substeps=2)"),
+    "native-sub4": ("native", ["native.threads=1", "native.contact_substeps=4"], "native (contact_substeps=4)"),
+    "native-it4": ("native", ["native.threads=1", "native.contact_iterations=4"], "native (contact_iterations=4)"),
+    "native-shock0": ("native", ["native.threads=1", "native.shock_iterations=0"], "native (shock_iterations=0)"),
     # Issue 22's experimental regime (docs/native-dynamics.md, "Two regimes"), beside the default.
     "native-spec": ("native", ["native.threads=1", "native.touching=speculative"],
                     "native (threads=1, touching=speculative)"),
     "bullet": ("bullet", ["bullet.substeps=1"], "bullet (substeps=1)"),
+    "bullet2": ("bullet", ["bullet.substeps=2"], "bullet (substeps=2)"),
     "bullet4": ("bullet", ["bullet.substeps=4"], "bullet (substeps=4)"),
     "bullet16": ("bullet", ["bullet.substeps=16"], "bullet (substeps=16)"),
+    "ode": ("ode", [], "ode (default: quickstep, 1 step per frame)"),
+    "mujoco": ("mujoco", [], "mujoco (default: steps <= 2 ms)"),
 }
+DEFAULT_BACKENDS = "native,bullet,bullet4,bullet16"
 CREEP_FROM = 1.0          # [s] creep = largest displacement of any body between this time and the end
 EQUAL_ACCURACY_FLOOR = 1e-3   # [m] creeps below this count as equal (the pyramid target's 1 mm)
+PARETO_FLOOR = 1e-6       # [m] accuracy values below this count as equal on the Pareto front and are drawn on it
+PARETO_TIME_TIE = 0.10    # [-] total step times within this fraction count as equal on the front (the machine
+                          # drifts 10-20 % between identical runs: docs/benchmarks/README.md)
+BACKEND_COLOURS = {"native": "#1f77b4", "bullet": "#d62728", "ode": "#2ca02c", "mujoco": "#9467bd"}
 # Cheapest first, so a short run still covers most scenes.
 DEFAULT_SCENES = ["plank", "stack20_ratio10", "pyramid10", "bin_spheres100", "bin_boxes100", "bin_hulls100",
                   "simbenchmark666", "pyramid20", "bin_spheres400", "pyramid30", "bin_spheres1000",
@@ -344,6 +376,11 @@ def starts_at_rest(scene):
     return scene.name.startswith(("pyramid", "stack", "scaling_"))
 
 
+def accuracy_measure(scene):
+    """The scene's accuracy measure: (row key, name); smaller is more accurate."""
+    return ("creep_m", "creep") if starts_at_rest(scene) else ("max_penetration_m", "deepest penetration")
+
+
 def equal_accuracy(rows, scenes):
     """Per scene: (scene, measure, native value, native total, cheapest Bullet label or None, its value,
     its total) where the Bullet configuration's value <= max(native's, EQUAL_ACCURACY_FLOOR)."""
@@ -353,7 +390,7 @@ def equal_accuracy(rows, scenes):
         n = by.get((sc.name, "native"))
         if not n or n.get("total_step_s") is None:
             continue
-        key, name = ("creep_m", "creep") if starts_at_rest(sc) else ("max_penetration_m", "deepest penetration")
+        key, name = accuracy_measure(sc)
         nval = n.get(key)
         if not isinstance(nval, float) or math.isnan(nval):
             continue
@@ -372,8 +409,87 @@ def equal_accuracy(rows, scenes):
     return out
 
 
-def write_markdown(path, rows, scenes, args):
-    lines = [f"# Dense contact: native vs Bullet (issue 9)", "",
+# ---- Pareto front: total step time against the accuracy measure --------------------------------
+
+def pareto_points(rows, scene, labels):
+    """[(label, total step time [s], accuracy [m] floored at PARETO_FLOOR, raw accuracy [m])] of the
+    configurations that finished with a value, and [(label, why not)] of the others."""
+    key, _ = accuracy_measure(scene)
+    by = {(r["scene"], r["backend"]): r for r in rows}
+    points, missing = [], []
+    for label in labels:
+        r = by.get((scene.name, label))
+        if r is None:
+            continue
+        acc = r.get(key)
+        if r.get("total_step_s") is None or not isinstance(acc, float) or math.isnan(acc):
+            why = r["status"] if r["status"] != "ok" else (acc if isinstance(acc, str) else "no value")
+            missing.append((label, why))
+            continue
+        points.append((label, r["total_step_s"], max(acc, PARETO_FLOOR), acc))
+    return points, missing
+
+
+def dominates(q, p):
+    """q is at least as cheap and as accurate as p, and strictly better in one: accuracy floored at
+    PARETO_FLOOR, times within PARETO_TIME_TIE equal (so a timing wobble alone never decides)."""
+    as_cheap, cheaper = q[1] <= p[1] * (1 + PARETO_TIME_TIE), q[1] * (1 + PARETO_TIME_TIE) < p[1]
+    return as_cheap and q[2] <= p[2] and (cheaper or q[2] < p[2])
+
+
+def pareto_front(points):
+    """The points no other point dominates, cheapest first."""
+    return sorted((p for p in points if not any(dominates(q, p) for q in points)), key=lambda p: (p[1], p[2]))
+
+
+def native_verdict(points):
+    """native's default: (its point or None, 'front' or the cheapest point that dominates it, the
+    points that tie with it: as accurate and within PARETO_TIME_TIE in time)."""
+    n = next((p for p in points if p[0] == "native"), None)
+    if n is None:
+        return None, None, []
+    doms = [q for q in points if dominates(q, n)]
+    ties = [q for q in points if q is not n and q[2] == n[2] and not dominates(q, n) and not dominates(n, q)]
+    return n, (min(doms, key=lambda q: (q[1], q[2])) if doms else "front"), ties
+
+
+def point_text(p):
+    acc = f"{p[3] * 1e3:.4g} mm" if p[3] >= PARETO_FLOOR else f"{p[3] * 1e3:.2g} mm (< {PARETO_FLOOR * 1e6:g} um)"
+    return f"{p[0]} ({p[1]:.4g} s, {acc})"
+
+
+def pareto_lines(rows, scenes, labels, charts):
+    """The Markdown section: per scene the front and native's verdict."""
+    out = ["", "## Pareto front: total step time against accuracy", "",
+           "Per scene, on its accuracy measure (creep after "
+           f"{CREEP_FROM:g} s for scenes that start at rest, deepest penetration for the others; "
+           f"values below {PARETO_FLOOR * 1e6:g} um count as equal): a configuration is on the front when no other "
+           "is at least as cheap (total step time) and as accurate, and strictly better in one; total step times "
+           f"within {PARETO_TIME_TIE:.0%} count as equal. Cheapest first.", ""]
+    for sc in scenes:
+        points, missing = pareto_points(rows, sc, labels)
+        if not points:
+            continue
+        _, measure_name = accuracy_measure(sc)
+        chart = f" — chart `{os.path.basename(charts[sc.name])}`" if charts.get(sc.name) else ""
+        out.append(f"- **{sc.name}** ({measure_name}){chart}: front " +
+                   " → ".join(point_text(p) for p in pareto_front(points)) + ".")
+        n, verdict, ties = native_verdict(points)
+        if verdict == "front":
+            out.append(f"  - native (default): on the front, {point_text(n)}" +
+                       (f"; tied (as accurate, time within {PARETO_TIME_TIE:.0%}): " +
+                        ", ".join(point_text(q) for q in ties) if ties else "") + ".")
+        elif verdict is not None:
+            out.append(f"  - native (default): dominated by {point_text(verdict)}, against {point_text(n)}.")
+        elif "native" in labels:
+            out.append(f"  - native (default): no point ({dict(missing).get('native', 'not run')}).")
+        if missing:
+            out.append("  - not on the chart: " + ", ".join(f"{lab} ({why})" for lab, why in missing) + ".")
+    return out
+
+
+def write_markdown(path, rows, scenes, args, charts):
+    lines = ["# Dense contact: native vs Bullet, ODE and MuJoCo (issues 9 and 22)", "",
              f"`{' '.join(sys.argv)}` — {args.duration:g} s simulated per run, median of {args.repeats} run(s), "
              f"{os.cpu_count()} cores, load {os.getloadavg()[0]:.2f}; vroc `{args.vroc}`.", "",
              "total = sum of stepFrame wall times (run.json mean x steps); pen = deepest penetration by the neutral "
@@ -421,6 +537,7 @@ def write_markdown(path, rows, scenes, args):
             lines.append("| " + " | ".join([
                 scene, measure_name, fmt(nval * 1e3, ".3f") + " mm", fmt(ntot, ".4g"), who,
                 fmt(bval * 1e3, ".3f") + " mm" if bval is not None else "–", fmt(btot, ".4g"), ratio]) + " |")
+    lines += pareto_lines(rows, scenes, args.backend_list, charts)
     judged = targets(rows, scenes)
     if judged:
         lines += ["", "## Issue 9 targets, judged for native", "", "| scene | target | native | met |", "|---|---|---|---|"]
@@ -429,6 +546,32 @@ def write_markdown(path, rows, scenes, args):
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     return lines
+
+
+def gnuplot_svg(out_dir, stem, blocks, settings, plots, size="860,480"):
+    """The one place charts are drawn: writes OUT/stem.dat (one gnuplot data set per block, a block
+    being (comment, rows of values); strings are quoted), OUT/stem.gp (the SVG terminal, the
+    `settings` lines, then one `plot` of `plots`, in which {dat} stands for the data file) and runs
+    gnuplot in OUT. Returns the path of OUT/stem.svg, or None (logged) without gnuplot or on failure."""
+    if shutil.which("gnuplot") is None:
+        log(f"gnuplot not found (apt-get install gnuplot-nox): {stem}.svg not drawn")
+        return None
+    dat, gp, svg = (stem + e for e in (".dat", ".gp", ".svg"))   # relative: gnuplot runs in out_dir
+    with open(os.path.join(out_dir, dat), "w") as f:
+        for comment, block in blocks:
+            f.write(f"# {comment}\n")
+            for row in block:
+                f.write(" ".join(f'"{v}"' if isinstance(v, str) else repr(v) for v in row) + "\n")
+            f.write("\n\n")
+    with open(os.path.join(out_dir, gp), "w") as f:
+        f.write(f"set terminal svg size {size} dynamic font 'sans,11' background rgb 'white'\n"
+                f"set output '{svg}'\nset termoption noenhanced\n" + "".join(line + "\n" for line in settings) +
+                "plot " + ", \\\n     ".join(plot.format(dat=dat) for plot in plots) + "\n")
+    proc = subprocess.run(["gnuplot", gp], capture_output=True, text=True, cwd=out_dir)
+    if proc.returncode != 0:
+        log(f"gnuplot failed on {gp}: {proc.stderr.strip()[:300]}")
+        return None
+    return os.path.join(out_dir, svg)
 
 
 def write_scaling_chart(out_dir, rows):
@@ -441,40 +584,78 @@ def write_scaling_chart(out_dir, rows):
     if not series:
         log("no finished scaling run: no chart")
         return None
-    if shutil.which("gnuplot") is None:
-        log("gnuplot not found (apt-get install gnuplot-nox): scaling.svg not drawn")
-        return None
-    dat, gp, svg = ("scaling." + e for e in ("dat", "gp", "svg"))   # relative: gnuplot runs in out_dir
     names = list(series)
     ns = sorted({n for s in series.values() for n, _ in s})
-    with open(os.path.join(out_dir, dat), "w") as f:
-        for name in names:
-            f.write(f"# {CONFIGS[name][2]}\n")
-            for n, w in sorted(series[name]):
-                f.write(f"{n} {w!r}\n")
-            f.write("\n\n")
-        n0, w0 = sorted(series[names[0]])[0]
-        f.write("# N log N guide\n")
-        for n in ns:
-            f.write(f"{n} {w0 * n * math.log(n) / (n0 * math.log(n0))!r}\n")
-    plots = [f"'{dat}' index {i} using 1:2 with linespoints lw 2 pt 7 title '{CONFIGS[name][2]}'"
+    n0, w0 = sorted(series[names[0]])[0]
+    blocks = [(CONFIGS[name][2], sorted(series[name])) for name in names]
+    blocks.append(("N log N guide", [(n, w0 * n * math.log(n) / (n0 * math.log(n0))) for n in ns]))
+    plots = [f"'{{dat}}' index {i} using 1:2 with linespoints lw 2 pt 7 title '{CONFIGS[name][2]}'"
              for i, name in enumerate(names)]
-    plots.append(f"'{dat}' index {len(names)} using 1:2 with lines dt 2 lw 1.5 lc rgb 'gray40' "
+    plots.append(f"'{{dat}}' index {len(names)} using 1:2 with lines dt 2 lw 1.5 lc rgb 'gray40' "
                  f"title 'c N log N (through {names[0]} at N = {n0})'")
-    with open(os.path.join(out_dir, gp), "w") as f:
-        f.write("set terminal svg size 860,480 dynamic font 'sans,11' background rgb 'white'\n"
-                f"set output '{svg}'\n"
-                "set title 'Stepping wall time per simulated second vs N (scaling_boxes: stacks of 4 cubes)' noenhanced\n"
-                "set xlabel 'virtual bodies N' noenhanced\nset ylabel 'wall time / simulated time [s/s]' noenhanced\n"
-                f"set logscale xy\nset xrange [{ns[0] / 1.5!r}:{ns[-1] * 1.5!r}]\nset format y '%g'\n"
-                "set grid\nset key inside left top noenhanced box opaque\n"
-                "plot " + ", \\\n     ".join(plots) + "\n")
-    proc = subprocess.run(["gnuplot", gp], capture_output=True, text=True, cwd=out_dir)
-    if proc.returncode != 0:
-        log(f"gnuplot failed: {proc.stderr.strip()[:300]}")
+    settings = ["set title 'Stepping wall time per simulated second vs N (scaling_boxes: stacks of 4 cubes)'",
+                "set xlabel 'virtual bodies N'", "set ylabel 'wall time / simulated time [s/s]'",
+                "set logscale xy", f"set xrange [{ns[0] / 1.5!r}:{ns[-1] * 1.5!r}]", "set format y '%g'",
+                "set grid", "set key inside left top box opaque"]
+    return gnuplot_svg(out_dir, "scaling", blocks, settings, plots)
+
+
+def place_labels(items, xrange, yrange, plot_px=(660, 420), char_px=(5.6, 13)):
+    """Label positions on a log-log chart so labels do not overlap: items [(x, y, text)], left-aligned
+    labels; a label that would overlap one already placed moves up (then down) by a line. Returns
+    [(label x, label y)]; sizes in decades from the plot area (plot_px) and the label font (char_px)."""
+    xd, yd = (math.log10(r[1] / r[0]) for r in (xrange, yrange))
+    line = char_px[1] / plot_px[1] * yd   # [decades] one label line
+    placed, out = [], [None] * len(items)
+    for i in sorted(range(len(items)), key=lambda i: (items[i][1], items[i][0])):
+        x, y, text = items[i]
+        lx, w = math.log10(x), (len(text) + 2) * char_px[0] / plot_px[0] * xd
+        for k in [0] + [j * sign for j in range(1, 12) for sign in (1, -1)]:
+            ly = math.log10(y) + k * line
+            if all(abs(ly - py) >= line or lx + w <= px or px + pw <= lx for px, py, pw in placed):
+                break
+        placed.append((lx, ly, w))
+        out[i] = (x, 10 ** ly)
+    return out
+
+
+def write_pareto_chart(out_dir, scene, rows, args):
+    """pareto-SCENE.svg: total step time (log) against the scene's accuracy measure (log, floored at
+    PARETO_FLOOR), one labelled point per configuration, one colour per backend, the front as steps."""
+    points, _ = pareto_points(rows, scene, args.backend_list)
+    if not points:
         return None
-    svg = os.path.join(out_dir, svg)
-    return svg
+    _, measure_name = accuracy_measure(scene)
+    what = f"creep after {CREEP_FROM:g} s" if measure_name == "creep" else measure_name
+    floor_mm = PARETO_FLOOR * 1e3
+    ts, accs = [p[1] for p in points], [p[2] * 1e3 for p in points]
+    xrange, yrange = (min(ts) / 1.5, max(ts) * 3), (min(accs) / 3, max(accs) * 3)
+    texts = [p[0] + ("*" if p[3] < PARETO_FLOOR else "") for p in points]
+    at = place_labels([(p[1], p[2] * 1e3, t) for p, t in zip(points, texts)], xrange, yrange)
+    blocks, plots = [], []
+    for backend in dict.fromkeys(CONFIGS[p[0]][0] for p in points):   # backends in CONFIGS order
+        mine = [(p[1], p[2] * 1e3, lx, ly, t) for p, t, (lx, ly) in zip(points, texts, at)
+                if CONFIGS[p[0]][0] == backend]
+        colour = BACKEND_COLOURS.get(backend, "black")
+        i = len(blocks)
+        blocks.append((f"{backend}: time [s], accuracy [mm], label x, label y, label", mine))
+        plots.append(f"'{{dat}}' index {i} using 1:2 with points pt 7 ps 1.3 lc rgb '{colour}' title '{backend}'")
+        plots.append(f"'{{dat}}' index {i} using 1:2:($3-$1):($4-$2) with vectors nohead lw 0.5 "
+                     f"lc rgb '{colour}' notitle")
+        plots.append(f"'{{dat}}' index {i} using 3:4:5 with labels left offset char 0.5,0.75 font ',9' "
+                     f"tc rgb '{colour}' notitle")
+    front = pareto_front(points)
+    blocks.append(("Pareto front, cheapest first", [(p[1], p[2] * 1e3) for p in front]))
+    plots.insert(0, f"'{{dat}}' index {len(blocks) - 1} using 1:2 with steps lw 1.5 dt 2 lc rgb 'gray30' "
+                    "title 'Pareto front'")
+    settings = [f"set title '{scene.name}: speed against accuracy ({args.duration:g} s simulated, "
+                f"median of {args.repeats} run(s); lower left is better)'",
+                "set xlabel 'total step time [s] (sum of stepFrame wall times, log)'",
+                f"set ylabel '{what} [mm] (log; * = below {floor_mm:g} mm, drawn at it)'",
+                "set logscale xy", f"set xrange [{xrange[0]!r}:{xrange[1]!r}]",
+                f"set yrange [{yrange[0]!r}:{yrange[1]!r}]", "set format x '%g'", "set format y '%g'",
+                "set grid", "set key outside right top box"]
+    return gnuplot_svg(out_dir, f"pareto-{scene.name}", blocks, settings, plots, size="960,540")
 
 
 # ---- main -------------------------------------------------------------------------------------
@@ -485,7 +666,10 @@ def main():
                                  epilog="Backends: " + ", ".join(f"{k} = {v[2]}" for k, v in CONFIGS.items()))
     ap.add_argument("--scenes", nargs="+", metavar="NAME", help="scene names in scenes/stress/ or paths "
                     f"(default: {' '.join(DEFAULT_SCENES)}; with --scaling: the scaling_boxes series)")
-    ap.add_argument("--backends", default="native,bullet,bullet4,bullet16", help="comma-separated, of: " + ", ".join(CONFIGS))
+    ap.add_argument("--backends", default=None, help=f"comma-separated, of: {', '.join(CONFIGS)} "
+                    f"(default {DEFAULT_BACKENDS})")
+    ap.add_argument("--ladder", action="store_true", help="every configuration: each reference at its default "
+                    "plus the speed-accuracy ladder (instead of --backends)")
     ap.add_argument("--repeats", type=int, default=3, help="runs per scene and backend; medians reported (default 3)")
     ap.add_argument("--duration", type=float, default=None, help="simulated seconds per run (default 10; --scaling: 2)")
     ap.add_argument("--timeout", type=float, default=120.0, help="seconds per vroc run before it is stopped and "
@@ -507,7 +691,10 @@ def main():
     if not (os.path.isfile(args.vroc) and os.access(args.vroc, os.X_OK)):
         sys.exit(f"dense_contact_bench: vroc binary not found at {args.vroc} "
                  "(build the vroc target first, or pass --vroc PATH / --build DIR)")
-    args.backend_list = [b.strip() for b in args.backends.split(",") if b.strip()]
+    if args.ladder and args.backends is not None:
+        sys.exit("dense_contact_bench: --ladder runs every configuration; give it or --backends, not both")
+    args.backend_list = list(CONFIGS) if args.ladder else \
+        [b.strip() for b in (args.backends or DEFAULT_BACKENDS).split(",") if b.strip()]
     bad = [b for b in args.backend_list if b not in CONFIGS]
     if bad or not args.backend_list:
         sys.exit(f"dense_contact_bench: unknown backend(s) {', '.join(bad) or '(none)'}; known: {', '.join(CONFIGS)}")
@@ -562,9 +749,12 @@ def main():
         print(f"\nwrote {os.path.join(out_dir, 'scaling.csv')}" + (f" and {svg}" if svg else ""))
         return
     write_csv(os.path.join(out_dir, "dense_contact.csv"), rows, CSV_COLUMNS)
-    lines = write_markdown(os.path.join(out_dir, "dense_contact.md"), rows, scenes, args)
+    charts = {sc.name: write_pareto_chart(out_dir, sc, rows, args) for sc in scenes}
+    lines = write_markdown(os.path.join(out_dir, "dense_contact.md"), rows, scenes, args, charts)
     print("\n".join(lines))
-    print(f"\nwrote {os.path.join(out_dir, 'dense_contact.csv')} and {os.path.join(out_dir, 'dense_contact.md')}")
+    drawn = [os.path.basename(c) for c in charts.values() if c]
+    print(f"\nwrote {os.path.join(out_dir, 'dense_contact.csv')} and {os.path.join(out_dir, 'dense_contact.md')}" +
+          (f"; charts {', '.join(drawn)}" if drawn else ""))
 
 
 if __name__ == "__main__":
