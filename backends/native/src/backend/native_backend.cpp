@@ -150,6 +150,7 @@ double NativeBackend::internalStep(double t, double remaining, bool unbounded) {
     // 2. Narrow phase of the due pairs; islands with a new contact or a tick due are solved.
     std::vector<PairSample> samples = samplePairs(due, t);
     solveIslands(samples, t);
+    recycleSamples(samples);
 
     // 3. Velocities changed: boxes and the changed bodies' flight pairs are bounded again now, with
     //    the new motion (a ball bouncing off the floor into a slab just above it is met in time).
@@ -167,6 +168,7 @@ double NativeBackend::internalStep(double t, double remaining, bool unbounded) {
     std::vector<PairSample> resampled = samplePairs(again, t);
     recordSamples(resampled);
     for (const PairSample& s : resampled) scheduleSampled(s, t, false);
+    recycleSamples(resampled);
 
     if (unbounded) return remaining;
     const double h_min = std::min(remaining, 1e-9);

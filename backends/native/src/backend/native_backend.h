@@ -60,6 +60,11 @@ public:
     Statistics statistics() const override { return stats_.report(); }
 
 private:
+    /// One part pair's gap and normal at a sample: each bounds the pair's time on its own (compounds).
+    struct PartGap {
+        double distance;
+        Vec3 normal;
+    };
     /// Persistent per body pair: feature caches, manifold caches and scheduling state.
     struct PairState {
         int a = -1, b = -1;
@@ -72,6 +77,11 @@ private:
         std::int64_t broad_stamp = -1;                 // broad-phase update that last listed it
         std::int64_t sampled_step = -1;                // internal step of the last sample
         bool placed_in_window = false;   // within the collision distance since t = 0: resting (deferImpacts)
+        // The storage of the pair's last sample, handed back after the step (recycleSamples) and
+        // reused by its next one: sampling allocates nothing once every pair has been sampled.
+        std::vector<ContactManifold> spare_manifolds;
+        std::vector<int> spare_manifold_part;
+        std::vector<PartGap> spare_parts;
     };
     /// One step's narrow-phase answer for a pair.
     struct PairSample {
@@ -80,12 +90,7 @@ private:
         Vec3 normal = Vec3::UnitZ();
         std::vector<ContactManifold> manifolds;
         std::vector<int> manifold_part;   ///< part-pair index of each manifold (its cache)
-        /// Every part pair's gap and normal: each bounds the pair's time on its own (compounds).
-        struct PartGap {
-            double distance;
-            Vec3 normal;
-        };
-        std::vector<PartGap> parts;
+        std::vector<PartGap> parts;       ///< every part pair's gap and normal
         int queries = 0, walk_steps = 0, max_walk = 0, not_converged = 0;
         bool deferred = false;   ///< approaching impact moved to its refined touching time (deferImpacts)
         double contact_time = 0.0;   ///< [s] deferred: when it is resolved (the refined touching time)
@@ -119,6 +124,8 @@ private:
     PairSample samplePair(int pair_index);
     /// Samples the pairs (bodies brought to t first), in parallel above a few pairs.
     std::vector<PairSample> samplePairs(const std::vector<int>& pairs, double t);
+    /// Hands the samples' storage back to their pairs for their next sample (the samples are spent).
+    void recycleSamples(std::vector<PairSample>& samples);
     /// Counts the samples' narrow-phase statistics and warnings; repairs deep penetration.
     void recordSamples(const std::vector<PairSample>& samples);
     /// Flight pair bookkeeping after a sample: touching state, queue key (time of the earliest
@@ -131,8 +138,8 @@ private:
     /// [s] when part pair `part_pair` (gap g at t) could close by `allowed` [m], down to the gap
     /// `floor` [m] (= g.distance - allowed, passed as the caller computed it): the longer of the pair
     /// bound (earliestCollisionTime) and the per-point bound; >= horizon means not before it.
-    double closeTime(const PairState& ps, std::size_t part_pair, const PairSample::PartGap& g, double allowed,
-                     double floor, const MotionBound& ma, const MotionBound& mb, double t, double horizon) const;
+    double closeTime(const PairState& ps, std::size_t part_pair, const PartGap& g, double allowed, double floor,
+                     const MotionBound& ma, const MotionBound& mb, double t, double horizon) const;
     /// [s] the per-point bound (vertex_approach_bound.h) of one part pair of a pair whose bodies
     /// are at t: when its projected gap along `normal` could fall below `floor` [m]; 0 if unknown.
     double supportPointTime(const PairState& ps, std::size_t part_pair, const Vec3& normal, double floor, double t,

@@ -117,6 +117,14 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
                                                  scene_.materials[scene_.bodies[ps.b].material]);
     const double cd = scene_.collision_distance;
     const double reach = patchReach(ps);
+    // The storage of the pair's previous sample (recycleSamples), emptied: no allocation once warm.
+    out.manifolds = std::move(ps.spare_manifolds);
+    out.manifold_part = std::move(ps.spare_manifold_part);
+    out.parts = std::move(ps.spare_parts);
+    out.manifolds.clear();
+    out.manifold_part.clear();
+    out.parts.clear();
+    thread_local ContactPatch patch;  // per worker; refilled for every manifold
     // Speculative regime: two held bodies (or one and the ground) within reach of each other are in
     // their islands' solve with speculative points: no event is scheduled for them; a pair with a
     // body in flight keeps the exact schedule (the queue) and becomes a manifold at touching.
@@ -145,7 +153,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
             m.pair = pair_index;
             m.normal = r.normal;
             m.distance = r.distance;
-            const ContactPatch patch = partPatch(sa.parts[i], pa, sb.parts[j], pb, cache, r, cd, reach);
+            partPatch(sa.parts[i], pa, sb.parts[j], pb, cache, r, cd, reach, patch);
             setManifoldPoints(patch, r, cd, reach > cd, m);
             m.restitution = mat.restitution;
             m.friction = mat.friction;
@@ -183,8 +191,7 @@ void NativeBackend::setManifoldPoints(const ContactPatch& patch, const Proximity
     // Without speculative contact every point of the patch counts as touching, as in issue 9: the
     // polygon's four extremes, no gaps (every point at the closest distance), the area centroid.
     if (!speculative) {
-        const std::vector<std::size_t> keep = reduceContactPointIndices(patch.points, r.normal);
-        m.points.reserve(keep.size());
+        const auto keep = reduceContactPointIndices(patch.points, r.normal);
         for (std::size_t k : keep) m.points.push_back(patch.points[k]);
         if (m.points.empty()) m.points.push_back(patch.centroid);
         m.centroid = patch.centroid;
@@ -193,11 +200,15 @@ void NativeBackend::setManifoldPoints(const ContactPatch& patch, const Proximity
     // What touches keeps the polygon's extremes (at most four: the block solve's symmetric split);
     // the speculative points keep their own four, the deepest first (Bullet's and Box2D's rule), so
     // a tipping body's far vertices are never traded for one more point of the face it rests on.
-    std::vector<std::size_t> keep;
+    InlineVector<std::size_t, kMaxManifoldSlots> keep;
+    // Per-thread scratch (the narrow phase runs on several workers): no allocation once warm.
+    thread_local std::vector<Vec3> pts;
+    thread_local std::vector<double> gaps;
+    thread_local std::vector<std::size_t> index;
     for (int side = 0; side < 2; ++side) {
-        std::vector<Vec3> pts;
-        std::vector<double> gaps;
-        std::vector<std::size_t> index;
+        pts.clear();
+        gaps.clear();
+        index.clear();
         for (std::size_t k = 0; k < patch.points.size(); ++k) {
             const double gap = k < patch.gaps.size() ? patch.gaps[k] : r.distance;
             if ((gap < cd) != (side == 0)) continue;
@@ -205,7 +216,8 @@ void NativeBackend::setManifoldPoints(const ContactPatch& patch, const Proximity
             gaps.push_back(gap);
             index.push_back(k);
         }
-        for (std::size_t k : reduceContactPointIndices(pts, r.normal, side == 0 ? std::vector<double>{} : gaps))
+        for (std::size_t k : reduceContactPointIndices(
+                 pts, r.normal, side == 0 ? std::span<const double>{} : std::span<const double>(gaps)))
             keep.push_back(index[k]);
     }
     bool beyond = false;   // some point is beyond the collision distance
@@ -253,6 +265,15 @@ std::vector<NativeBackend::PairSample> NativeBackend::samplePairs(const std::vec
     return samples;
 }
 
+void NativeBackend::recycleSamples(std::vector<PairSample>& samples) {
+    for (PairSample& s : samples) {
+        PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        ps.spare_manifolds = std::move(s.manifolds);
+        ps.spare_manifold_part = std::move(s.manifold_part);
+        ps.spare_parts = std::move(s.parts);
+    }
+}
+
 void NativeBackend::recordSamples(const std::vector<PairSample>& samples) {
     for (const PairSample& s : samples) {
         stats_.narrow_queries += s.queries;
@@ -283,8 +304,8 @@ double NativeBackend::bouncingSphereRecheck(const PairSample& s, double t) const
     return (clear - s.distance) / away;
 }
 
-double NativeBackend::closeTime(const PairState& ps, std::size_t part_pair, const PairSample::PartGap& g,
-                                double allowed, double floor, const MotionBound& ma, const MotionBound& mb, double t,
+double NativeBackend::closeTime(const PairState& ps, std::size_t part_pair, const PartGap& g, double allowed,
+                                double floor, const MotionBound& ma, const MotionBound& mb, double t,
                                 double horizon) const {
     const double pair_time = earliestCollisionTime(allowed, g.normal, ma, mb, horizon);
     if (!(pair_time < horizon)) return pair_time;
@@ -350,7 +371,7 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
     // grid tick; what may close within the tick was in the solve as speculative points.
     const bool speculative = held && settings_.touching == TouchingRegime::Speculative;
     for (std::size_t k = 0; k < s.parts.size(); ++k) {
-        const PairSample::PartGap& g = s.parts[k];
+        const PartGap& g = s.parts[k];
         if (speculative && g.distance < cd) continue;
         const double allowed =
             held ? g.distance - kSolvedFloor * cd

@@ -21,14 +21,17 @@ ProximityResult queryParts(const ConvexPart& pa, const Pose& fa, const ConvexPar
     return queryMeshMesh(*pa.mesh, fa, *pb.mesh, fb, cache);
 }
 
-ContactPatch partPatch(const ConvexPart& pa, const Pose& fa, const ConvexPart& pb, const Pose& fb,
-                       const FeatureCache& cache, const ProximityResult& r, double tolerance, double reach) {
-    if (!pa.is_sphere && !pb.is_sphere) return contactPatch(*pa.mesh, fa, *pb.mesh, fb, cache, r, tolerance, reach);
-    ContactPatch p;
+void partPatch(const ConvexPart& pa, const Pose& fa, const ConvexPart& pb, const Pose& fb, const FeatureCache& cache,
+               const ProximityResult& r, double tolerance, double reach, ContactPatch& p) {
+    if (!pa.is_sphere && !pb.is_sphere) {
+        contactPatch(*pa.mesh, fa, *pb.mesh, fb, cache, r, tolerance, reach, p);
+        return;
+    }
+    p.points.clear();
+    p.gaps.clear();
     p.centroid = 0.5 * (r.point_a + r.point_b);
     p.points.push_back(p.centroid);
     p.gaps.push_back(r.distance);
-    return p;
 }
 
 }  // namespace vroc::native

@@ -14,8 +14,8 @@ ProximityResult queryParts(const ConvexPart& pa, const Pose& fa, const ConvexPar
                            const Pose& fb, FeatureCache& cache);
 
 /// Contact region of a touching part pair (world): the patch polygon for two meshes, the single
-/// mid-point otherwise.
-ContactPatch partPatch(const ConvexPart& pa, const Pose& fa, const ConvexPart& pb, const Pose& fb,
-                       const FeatureCache& cache, const ProximityResult& r, double tolerance, double reach = 0.0);
+/// mid-point otherwise; into `patch` (cleared first, its storage kept).
+void partPatch(const ConvexPart& pa, const Pose& fa, const ConvexPart& pb, const Pose& fb, const FeatureCache& cache,
+               const ProximityResult& r, double tolerance, double reach, ContactPatch& patch);
 
 }  // namespace vroc::native

@@ -3,9 +3,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <cmath>
-#include <deque>
+#include <cstdint>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -160,22 +159,34 @@ void relaxPlastic(std::vector<WorkBody>& wb, PointConstraint& c, int& ill) {
     c.lambda_n += std::max(0.0, j.dot(c.n));
 }
 
+// Shock levels: each body's graph distance from the bodies of infinite mass (breadth first over
+// the contact graph, kept as compressed adjacency rows: three allocations, not one per body).
 void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies,
                   const std::vector<PointConstraint>& cs) {
-    std::vector<std::vector<int>> adj(wb.size());
+    std::vector<int> start(wb.size() + 1, 0);
     for (const auto& c : cs) {
-        adj[c.a].push_back(c.b);
-        adj[c.b].push_back(c.a);
+        ++start[static_cast<std::size_t>(c.a) + 1];
+        ++start[static_cast<std::size_t>(c.b) + 1];
     }
-    std::deque<int> queue;
+    for (std::size_t i = 0; i < wb.size(); ++i) start[i + 1] += start[i];
+    std::vector<int> adj(static_cast<std::size_t>(start.back()));
+    {
+        std::vector<int> fill(start.begin(), start.end() - 1);
+        for (const auto& c : cs) {
+            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.a)]++)] = c.b;
+            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.b)]++)] = c.a;
+        }
+    }
+    std::vector<int> queue;  // breadth-first order; `head` is the front
+    queue.reserve(wb.size());
     for (std::size_t i = 0; i < wb.size(); ++i) {
         wb[i].level = bodies[i].infiniteMass() ? 0 : kUnreached;
         if (bodies[i].infiniteMass()) queue.push_back(static_cast<int>(i));
     }
-    while (!queue.empty()) {
-        const int i = queue.front();
-        queue.pop_front();
-        for (int j : adj[i]) {
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const int i = queue[head];
+        for (int k = start[static_cast<std::size_t>(i)]; k < start[static_cast<std::size_t>(i) + 1]; ++k) {
+            const int j = adj[static_cast<std::size_t>(k)];
             if (wb[j].level == kUnreached) {
                 wb[j].level = wb[i].level + 1;
                 queue.push_back(j);
@@ -556,13 +567,17 @@ void warmStart(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, std:
 // Split impulse: pseudo-velocities, separate from the real ones, push patches whose gap is below the
 // floor back towards the target gap; the result is a displacement per body.
 // One constraint per patch at its centroid.
-int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies,
-                 const std::vector<Patch>& patches, const std::vector<ContactManifold>& manifolds, double h,
-                 const ContactSolverSettings& settings, std::vector<BodyImpulse>& impulses) {
+int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies, const std::vector<Patch>& patches,
+                 const std::vector<ContactManifold>& manifolds, double h, const ContactSolverSettings& settings,
+                 bool levels_assigned, std::vector<BodyImpulse>& impulses) {
     if (settings.correction_iterations <= 0 || !(h > 0.0)) return 0;
-    std::vector<PointConstraint> centroids;
-    for (const Patch& p : patches) centroids.push_back(p.friction);
-    assignLevels(wb, bodies, centroids);
+    // The levels of the contact graph: the velocity sweeps assigned them already, from the same
+    // pairs (a patch's points join the bodies its centroid joins).
+    if (!levels_assigned) {
+        std::vector<PointConstraint> centroids;
+        for (const Patch& p : patches) centroids.push_back(p.friction);
+        assignLevels(wb, bodies, centroids);
+    }
     struct Push {
         const PointConstraint* c;
         double target;   // [m/s] pseudo normal speed wanted
@@ -667,7 +682,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     };
     for (std::size_t m = 0; m < manifolds.size(); ++m) {
         const ContactManifold& mf = manifolds[m];
-        std::vector<Vec3> pts = single_point ? std::vector<Vec3>{mf.centroid} : mf.points;
+        PointArray<Vec3> pts = single_point ? PointArray<Vec3>{mf.centroid} : mf.points;
         if (pts.empty()) pts.push_back(mf.centroid);
         const bool gaps = !single_point && mf.point_gap.size() == pts.size();
         Patch patch;
@@ -726,7 +741,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     }
     // Impulses per body, recovered from the velocity change (covers every pass above).
     impulses.assign(bodies.size(), BodyImpulse{});
-    report.corrected_patches = positionPass(wb, bodies, patches, manifolds, h, settings, impulses);
+    report.corrected_patches = positionPass(wb, bodies, patches, manifolds, h, settings, !single_point, impulses);
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& rb = bodies[i];
         if (rb.infiniteMass()) continue;

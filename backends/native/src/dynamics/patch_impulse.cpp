@@ -16,7 +16,7 @@ namespace {
 // ends it. Without friction the first pass is the answer.
 constexpr int kMaxPasses = 8;
 constexpr double kRelativeChange = 1e-6;
-constexpr int kMaxPoints = 8;   // a manifold keeps at most four touching and four speculative points
+constexpr int kMaxPoints = kMaxPatchPoints;
 
 using Block = Eigen::Matrix<double, kMaxPoints, kMaxPoints>;
 using BlockVector = Eigen::Matrix<double, kMaxPoints, 1>;

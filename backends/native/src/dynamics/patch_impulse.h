@@ -17,6 +17,9 @@
 
 namespace vroc::native {
 
+/// At most this many points in a patch: a manifold keeps at most four touching and four speculative.
+constexpr int kMaxPatchPoints = 8;
+
 struct PatchImpulse {
     std::vector<double> normal;          ///< [N s] per point, >= 0, along n (on B; -on A)
     Vec3 tangent = Vec3::Zero();         ///< [N s] friction impulse at the centroid, world (on B)

@@ -14,12 +14,13 @@ std::vector<Vec3> reduceContactPoints(const std::vector<Vec3>& points, const Vec
     return out;
 }
 
-std::vector<std::size_t> reduceContactPointIndices(const std::vector<Vec3>& points, const Vec3& normal,
-                                                   const std::vector<double>& gaps) {
+InlineVector<std::size_t, kMaxManifoldPoints> reduceContactPointIndices(std::span<const Vec3> points,
+                                                                        const Vec3& normal,
+                                                                        std::span<const double> gaps) {
     const std::size_t n = points.size();
     if (n <= kMaxManifoldPoints) {
-        std::vector<std::size_t> all(n);
-        for (std::size_t i = 0; i < n; ++i) all[i] = i;
+        InlineVector<std::size_t, kMaxManifoldPoints> all;
+        for (std::size_t i = 0; i < n; ++i) all.push_back(i);
         return all;
     }
     Vec3 centroid = Vec3::Zero();
@@ -50,7 +51,7 @@ std::vector<std::size_t> reduceContactPointIndices(const std::vector<Vec3>& poin
         if (i == i0 || i == i1 || i == i2) return -1.0;
         return std::max({-side * area(i0, i1, i), -side * area(i1, i2, i), -side * area(i2, i0, i)});
     });
-    std::vector<std::size_t> keep{i0, i1, i2, i3};
+    InlineVector<std::size_t, kMaxManifoldPoints> keep{i0, i1, i2, i3};
     std::sort(keep.begin(), keep.end());
     keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
     return keep;
@@ -78,21 +79,23 @@ void warmStartManifold(const PersistentManifold& cache, const Pose& frame_a, dou
     const double scale = std::min(kMaxWarmScale, step / cache.step);
     const double r2 = match_radius * match_radius;
     const Pose to_a = frame_a.inverse();
-    std::vector<std::uint8_t> used(cache.local_a.size(), 0);
+    // Cached points already matched, one bit each (a cache holds at most a manifold's eight).
+    const std::size_t cached = std::min<std::size_t>(cache.local_a.size(), 64);
+    std::uint64_t used = 0;
     int matched = 0;
     for (std::size_t i = 0; i < m.points.size(); ++i) {
         const Vec3 local = to_a.apply(m.points[i]);
-        std::size_t best = cache.local_a.size();
+        std::size_t best = cached;
         double best_d2 = r2;
-        for (std::size_t k = 0; k < cache.local_a.size(); ++k) {
+        for (std::size_t k = 0; k < cached; ++k) {
             const double d2 = (cache.local_a[k] - local).squaredNorm();
-            if (used[k] == 0 && d2 <= best_d2) {
+            if ((used >> k & 1U) == 0 && d2 <= best_d2) {
                 best_d2 = d2;
                 best = k;
             }
         }
-        if (best == cache.local_a.size()) continue;
-        used[best] = 1;
+        if (best == cached) continue;
+        used |= std::uint64_t{1} << best;
         ++matched;
         m.point_impulse[i] = scale * cache.normal_impulse[best];
     }

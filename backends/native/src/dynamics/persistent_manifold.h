@@ -9,6 +9,7 @@
 // Owned by the backend's pair state, one per part pair; plain data.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "dynamics/contact.h"
@@ -26,7 +27,14 @@ struct PersistentManifold {
     double torsion_impulse = 0.0;         ///< [N m s] patch spin friction impulse
     double step = 0.0;                    ///< [s] step the impulses were solved for (0: empty)
     bool empty() const { return !(step > 0.0); }
-    void clear() { *this = PersistentManifold{}; }
+    /// Empties the cache, keeping its storage (a pair's cache is refilled at every solve).
+    void clear() {
+        local_a.clear();
+        normal_impulse.clear();
+        tangent_impulse = Vec3::Zero();
+        torsion_impulse = 0.0;
+        step = 0.0;
+    }
 };
 
 /// At most kMaxManifoldPoints of a convex patch polygon (CCW about `normal`, world): the point
@@ -35,8 +43,10 @@ struct PersistentManifold {
 std::vector<Vec3> reduceContactPoints(const std::vector<Vec3>& points, const Vec3& normal);
 /// The same choice as indices into `points` (ascending), so data kept per point follows it. With
 /// `gaps` (one per point), the first point kept is the deepest instead of the farthest from the centroid.
-std::vector<std::size_t> reduceContactPointIndices(const std::vector<Vec3>& points, const Vec3& normal,
-                                                   const std::vector<double>& gaps = {});
+/// Allocates nothing.
+InlineVector<std::size_t, kMaxManifoldPoints> reduceContactPointIndices(std::span<const Vec3> points,
+                                                                        const Vec3& normal,
+                                                                        std::span<const double> gaps = {});
 
 /// Fills m.point_impulse, m.tangent_impulse and m.torsion_impulse from the cache for a solve of
 /// `step` [s] (impulses scale with the step, up by at most 3x: a resting load needs m g h). `frame_a` is body A's

@@ -20,30 +20,50 @@ void planeBasis(const Vec3& n, Vec3& u, Vec3& w) {
     w = n.cross(u);
 }
 
-std::vector<Vec3> faceWorld(const ConvexMesh& m, const Pose& pose, int f) {
-    std::vector<Vec3> pts;
-    int h = m.faceEdge(f);
-    for (int k = 0; k < m.faceSize(f); ++k, h = m.next(h)) pts.push_back(pose.apply(m.position(m.origin(h))));
-    return pts;
+// The patch is computed on every solve of every touching pair, so its working polygons live in
+// per-thread scratch buffers that keep their capacity (no heap allocation once warm; the narrow
+// phase runs on several workers, each with its own). Each buffer has one use at a time.
+struct Scratch {
+    std::vector<int> faces, edges;
+    std::vector<Vec3> piece_a, piece_b;
+    std::vector<Eigen::Vector2d> a2, b2, out, clip_buffer, kept;
+};
+
+Scratch& scratch() {
+    thread_local Scratch s;
+    return s;
 }
 
-bool onPlane(const std::vector<Vec3>& pts, const Vec3& dir, const Vec3& at, double tol) {
-    for (const Vec3& p : pts)
-        if (dir.dot(p - at) < -tol) return false;
+/// Face f's vertices in world coordinates, into `pts` (cleared first).
+void faceWorld(const ConvexMesh& m, const Pose& pose, int f, std::vector<Vec3>& pts) {
+    pts.clear();
+    int h = m.faceEdge(f);
+    for (int k = 0; k < m.faceSize(f); ++k, h = m.next(h)) pts.push_back(pose.apply(m.position(m.origin(h))));
+}
+
+/// True if no vertex of face f lies more than tol below the plane through `at` along dir.
+bool faceOnPlane(const ConvexMesh& m, const Pose& pose, int f, const Vec3& dir, const Vec3& at, double tol) {
+    int h = m.faceEdge(f);
+    for (int k = 0; k < m.faceSize(f); ++k, h = m.next(h))
+        if (dir.dot(pose.apply(m.position(m.origin(h))) - at) < -tol) return false;
     return true;
 }
 
 /// The piece of body m (feature f) lying on its support plane along world direction `dir`
-/// through `at`: a face polygon (CCW seen along dir), an edge (2 points), or the point.
-std::vector<Vec3> supportPiece(const ConvexMesh& m, const Pose& pose, Feature f, const Vec3& dir,
-                               const Vec3& at, double tol) {
-    std::vector<int> faces, edges;
+/// through `at`, into `piece`: a face polygon (CCW seen along dir), an edge (2 points), or the point.
+void supportPiece(const ConvexMesh& m, const Pose& pose, Feature f, const Vec3& dir, const Vec3& at, double tol,
+                  std::vector<Vec3>& piece) {
+    std::vector<int>& faces = scratch().faces;
+    std::vector<int>& edges = scratch().edges;
+    faces.clear();
+    edges.clear();
     if (f.type == FeatureType::Face) {
         faces.push_back(f.index);
         int h = m.faceEdge(f.index);
         for (int k = 0; k < m.faceSize(f.index); ++k, h = m.next(h)) edges.push_back(h);
     } else if (f.type == FeatureType::Edge) {
-        faces = {m.face(f.index), m.face(f.index ^ 1)};
+        faces.push_back(m.face(f.index));
+        faces.push_back(m.face(f.index ^ 1));
         edges.push_back(f.index);
     } else if (f.type == FeatureType::Vertex) {
         const int first = m.vertexEdge(f.index);
@@ -55,49 +75,59 @@ std::vector<Vec3> supportPiece(const ConvexMesh& m, const Pose& pose, Feature f,
     }
     int best_face = -1;
     for (int g : faces)
-        if (onPlane(faceWorld(m, pose, g), dir, at, tol) &&
+        if (faceOnPlane(m, pose, g, dir, at, tol) &&
             (best_face < 0 || pose.rotate(m.faceNormal(g)).dot(dir) > pose.rotate(m.faceNormal(best_face)).dot(dir)))
             best_face = g;
-    if (best_face >= 0) return faceWorld(m, pose, best_face);
-    for (int h : edges) {
-        std::vector<Vec3> seg{pose.apply(m.position(m.origin(h))), pose.apply(m.position(m.destination(h)))};
-        if (onPlane(seg, dir, at, tol)) return seg;
+    if (best_face >= 0) {
+        faceWorld(m, pose, best_face, piece);
+        return;
     }
-    return {at};
+    for (int h : edges) {
+        const Vec3 p = pose.apply(m.position(m.origin(h))), q = pose.apply(m.position(m.destination(h)));
+        if (!(dir.dot(p - at) < -tol) && !(dir.dot(q - at) < -tol)) {
+            piece.assign({p, q});
+            return;
+        }
+    }
+    piece.assign(1, at);
 }
 
 using Poly2 = std::vector<Eigen::Vector2d>;
 
 double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-/// Sutherland–Hodgman: subject clipped by the convex CCW polygon `clip`.
-Poly2 clipPolygon(Poly2 subject, const Poly2& clip) {
-    for (size_t i = 0; i < clip.size() && !subject.empty(); ++i) {
+/// Sutherland–Hodgman: `subject` clipped by the convex CCW polygon `clip`, into `result` (a scratch
+/// buffer: it trades storage with the clipping buffer at every edge).
+void clipPolygon(const Poly2& subject, const Poly2& clip, Poly2& result) {
+    Poly2& out = scratch().clip_buffer;
+    result.assign(subject.begin(), subject.end());
+    for (size_t i = 0; i < clip.size() && !result.empty(); ++i) {
         const Eigen::Vector2d a = clip[i], e = clip[(i + 1) % clip.size()] - a;
-        Poly2 out;
-        for (size_t k = 0; k < subject.size(); ++k) {
-            const Eigen::Vector2d p = subject[k], q = subject[(k + 1) % subject.size()];
+        out.clear();
+        for (size_t k = 0; k < result.size(); ++k) {
+            const Eigen::Vector2d p = result[k], q = result[(k + 1) % result.size()];
             const double dp = cross2(e, p - a), dq = cross2(e, q - a);   // >= 0: inside (left)
             if (dp >= 0.0) out.push_back(p);
             if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (dp / (dp - dq)) * (q - p));
         }
-        subject = std::move(out);
+        std::swap(result, out);
     }
-    return subject;
 }
 
-/// Segment pq clipped to the convex CCW polygon (2D); empty if outside.
-Poly2 clipSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Poly2& clip) {
+/// Segment pq clipped to the convex CCW polygon (2D), into `result`; empty if outside.
+void clipSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Poly2& clip, Poly2& result) {
+    result.clear();
     double lo = 0.0, hi = 1.0;
     for (size_t i = 0; i < clip.size(); ++i) {
         const Eigen::Vector2d a = clip[i], e = clip[(i + 1) % clip.size()] - a;
         const double dp = cross2(e, p - a), dq = cross2(e, q - a);
-        if (dp < 0.0 && dq < 0.0) return {};
+        if (dp < 0.0 && dq < 0.0) return;
         if (dp < 0.0) lo = std::max(lo, dp / (dp - dq));
         else if (dq < 0.0) hi = std::min(hi, dp / (dp - dq));
     }
-    if (lo > hi) return {};
-    return {p + lo * (q - p), p + hi * (q - p)};
+    if (lo > hi) return;
+    result.push_back(p + lo * (q - p));
+    result.push_back(p + hi * (q - p));
 }
 
 /// [m] the height along n (from `mid`) of the piece `pts` (world) above the mid-plane point at 2D
@@ -147,9 +177,13 @@ double surfaceHeight(const ConvexMesh& m, const Pose& pose, const Eigen::Vector2
 
 /// The face of the feature (or around it) whose world normal is most aligned with `dir`.
 int alignedFace(const ConvexMesh& m, const Pose& pose, Feature f, const Vec3& dir) {
-    std::vector<int> faces;
     if (f.type == FeatureType::Face) return f.index;
-    if (f.type == FeatureType::Edge) faces = {m.face(f.index), m.face(f.index ^ 1)};
+    std::vector<int>& faces = scratch().faces;
+    faces.clear();
+    if (f.type == FeatureType::Edge) {
+        faces.push_back(m.face(f.index));
+        faces.push_back(m.face(f.index ^ 1));
+    }
     if (f.type == FeatureType::Vertex) {
         const int first = m.vertexEdge(f.index);
         for (int h = first;;) {
@@ -169,22 +203,27 @@ int alignedFace(const ConvexMesh& m, const Pose& pose, Feature f, const Vec3& di
     return best;
 }
 
-/// Reference and incident faces clipped, points kept within `reach` (see contactPatch).
-ContactPatch speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
-                              const FeatureCache& cache, const ProximityResult& result, double tolerance,
-                              double reach) {
-    ContactPatch patch;
+/// Reference and incident faces clipped, points kept within `reach` (see contactPatch), into the
+/// empty `patch`; left empty when nothing touches.
+void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+                      const FeatureCache& cache, const ProximityResult& result, double tolerance, double reach,
+                      ContactPatch& patch) {
     const Vec3 n = result.normal;
     const int fa = alignedFace(a, pose_a, cache.a, n);
     const int fb = alignedFace(b, pose_b, cache.b, -n);
-    if (fa < 0 || fb < 0) return patch;
-    const std::vector<Vec3> pa = faceWorld(a, pose_a, fa);
-    const std::vector<Vec3> pb = faceWorld(b, pose_b, fb);
+    if (fa < 0 || fb < 0) return;
+    std::vector<Vec3>& pa = scratch().piece_a;
+    std::vector<Vec3>& pb = scratch().piece_b;
+    faceWorld(a, pose_a, fa, pa);
+    faceWorld(b, pose_b, fb, pb);
     const Vec3 mid = 0.5 * (result.point_a + result.point_b);
     Vec3 u, w;
     planeBasis(n, u, w);
     auto to2 = [&](const Vec3& x) { return Eigen::Vector2d((x - mid).dot(u), (x - mid).dot(w)); };
-    Poly2 a2, b2;
+    Poly2& a2 = scratch().a2;
+    Poly2& b2 = scratch().b2;
+    a2.clear();
+    b2.clear();
     for (const Vec3& x : pa) a2.push_back(to2(x));
     for (auto it = pb.rbegin(); it != pb.rend(); ++it) b2.push_back(to2(*it));   // B's CCW is about -n
     // Candidates: the overlap of the two faces (where their edges cross), and every vertex of either
@@ -197,7 +236,9 @@ ContactPatch speculativePatch(const ConvexMesh& a, const Pose& pose_a, const Con
     };
     const double nan = std::numeric_limits<double>::quiet_NaN();
     std::vector<Candidate> candidates;
-    for (const Eigen::Vector2d& x : clipPolygon(b2, a2)) candidates.push_back({x, nan, nan});
+    Poly2& overlap = scratch().out;
+    clipPolygon(b2, a2, overlap);
+    for (const Eigen::Vector2d& x : overlap) candidates.push_back({x, nan, nan});
     auto inside = [](const Poly2& poly, const Eigen::Vector2d& x) {
         for (std::size_t i = 0; i < poly.size(); ++i)
             if (cross2(poly[(i + 1) % poly.size()] - poly[i], x - poly[i]) < 0.0) return false;
@@ -216,7 +257,8 @@ ContactPatch speculativePatch(const ConvexMesh& a, const Pose& pose_a, const Con
     Vec3 touching_sum = Vec3::Zero();
     int touching = 0;
     const double merge2 = 1e-12 * (a2.empty() ? 1.0 : (a2[0].squaredNorm() + 1.0));
-    std::vector<Eigen::Vector2d> kept;
+    std::vector<Eigen::Vector2d>& kept = scratch().kept;
+    kept.clear();
     for (const Candidate& c : candidates) {
         const Eigen::Vector2d& x = c.x;
         if (std::any_of(kept.begin(), kept.end(), [&](const Eigen::Vector2d& k) { return (k - x).squaredNorm() <= merge2; }))
@@ -240,16 +282,26 @@ ContactPatch speculativePatch(const ConvexMesh& a, const Pose& pose_a, const Con
     if (touching == 0) {
         patch.points.clear();
         patch.gaps.clear();
-        return patch;
+        return;
     }
     patch.centroid = touching_sum / touching;
-    return patch;
 }
 
 }  // namespace
 
 ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
                           const FeatureCache& cache, const ProximityResult& result, double tolerance, double reach) {
+    ContactPatch patch;
+    contactPatch(a, pose_a, b, pose_b, cache, result, tolerance, reach, patch);
+    return patch;
+}
+
+void contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+                  const FeatureCache& cache, const ProximityResult& result, double tolerance, double reach,
+                  ContactPatch& patch) {
+    patch.points.clear();
+    patch.gaps.clear();
+    patch.centroid = Vec3::Zero();
     const Vec3 n = result.normal;
     const Vec3 mid = 0.5 * (result.point_a + result.point_b);
     Vec3 u, w;
@@ -257,32 +309,43 @@ ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexM
     auto to2 = [&](const Vec3& x) { return Eigen::Vector2d((x - mid).dot(u), (x - mid).dot(w)); };
     auto to3 = [&](const Eigen::Vector2d& x) { return Vec3(mid + x.x() * u + x.y() * w); };
     if (reach > tolerance) {
-        ContactPatch patch = speculativePatch(a, pose_a, b, pose_b, cache, result, tolerance, reach);
-        if (!patch.points.empty()) return patch;
+        speculativePatch(a, pose_a, b, pose_b, cache, result, tolerance, reach, patch);
+        if (!patch.points.empty()) return;
+        patch.centroid = Vec3::Zero();
     }
-    std::vector<Vec3> pa = supportPiece(a, pose_a, cache.a, n, result.point_a, tolerance);
-    std::vector<Vec3> pb = supportPiece(b, pose_b, cache.b, -n, result.point_b, tolerance);
-    Poly2 a2, b2, out;
+    Scratch& sc = scratch();
+    std::vector<Vec3>& pa = sc.piece_a;
+    std::vector<Vec3>& pb = sc.piece_b;
+    supportPiece(a, pose_a, cache.a, n, result.point_a, tolerance, pa);
+    supportPiece(b, pose_b, cache.b, -n, result.point_b, tolerance, pb);
+    Poly2& a2 = sc.a2;
+    Poly2& b2 = sc.b2;
+    Poly2& out = sc.out;
+    a2.clear();
+    b2.clear();
+    out.clear();
     for (const Vec3& x : pa) a2.push_back(to2(x));
     for (auto it = pb.rbegin(); it != pb.rend(); ++it) b2.push_back(to2(*it));   // B's CCW is about -n
-    if (a2.size() >= 3 && b2.size() >= 3) out = clipPolygon(b2, a2);
-    else if (a2.size() >= 3 && b2.size() == 2) out = clipSegment(b2[0], b2[1], a2);
-    else if (b2.size() >= 3 && a2.size() == 2) out = clipSegment(a2[0], a2[1], b2);
+    if (a2.size() >= 3 && b2.size() >= 3)
+        clipPolygon(b2, a2, out);
+    else if (a2.size() >= 3 && b2.size() == 2)
+        clipSegment(b2[0], b2[1], a2, out);
+    else if (b2.size() >= 3 && a2.size() == 2)
+        clipSegment(a2[0], a2[1], b2, out);
     else if (a2.size() == 2 && b2.size() == 2) {   // parallel edges: overlap along a's direction
         const Eigen::Vector2d d = a2[1] - a2[0];
         if (std::abs(cross2(d.normalized(), b2[1] - b2[0])) <= tolerance) {
             const double dd = d.squaredNorm();
             const double t0 = (b2[0] - a2[0]).dot(d) / dd, t1 = (b2[1] - a2[0]).dot(d) / dd;
             const double lo = std::max(0.0, std::min(t0, t1)), hi = std::min(1.0, std::max(t0, t1));
-            if (lo <= hi) out = {a2[0] + lo * d, a2[0] + hi * d};
+            if (lo <= hi) out.assign({a2[0] + lo * d, a2[0] + hi * d});
         }
     }
-    ContactPatch patch;
     if (out.empty()) {
-        patch.points = {mid};
-        patch.gaps = {result.distance};
+        patch.points.push_back(mid);
+        patch.gaps.push_back(result.distance);
         patch.centroid = mid;
-        return patch;
+        return;
     }
     double area = 0.0;
     Eigen::Vector2d c = Eigen::Vector2d::Zero(), mean = Eigen::Vector2d::Zero();
@@ -299,7 +362,6 @@ ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexM
     // Area centroid for a polygon; the mean for a segment, a point or a degenerate sliver.
     const double scale2 = (out.front() - mean).squaredNorm() + 1e-300;
     patch.centroid = to3(out.size() >= 3 && std::abs(area) > 1e-12 * scale2 ? Eigen::Vector2d(c / (3.0 * area)) : mean);
-    return patch;
 }
 
 }  // namespace vroc::native

@@ -33,5 +33,10 @@ struct ContactPatch {
 ContactPatch contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b,
                           const Pose& pose_b, const FeatureCache& cache,
                           const ProximityResult& result, double tolerance, double reach = 0.0);
+/// The same, into `patch` (cleared first; its storage is kept, so a caller that reuses one patch
+/// allocates nothing once warm).
+void contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+                  const FeatureCache& cache, const ProximityResult& result, double tolerance, double reach,
+                  ContactPatch& patch);
 
 }  // namespace vroc::native

@@ -59,7 +59,7 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
         const RigidBody& a = bodies_[static_cast<std::size_t>(ps.a)];
         const RigidBody& b = bodies_[static_cast<std::size_t>(ps.b)];
         std::vector<DistanceSample> now;
-        for (const PairSample::PartGap& g : s.parts) now.push_back({g.distance, g.normal});
+        for (const PartGap& g : s.parts) now.push_back({g.distance, g.normal});
         const RefineResult r =
             refineContactTime(flightGaps(a, sa, b, sb, ps.caches, scene_.gravity, t), now, ballisticBound(ps.a),
                               ballisticBound(ps.b), t, t + horizon, gap_max);
