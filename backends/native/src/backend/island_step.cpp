@@ -5,7 +5,6 @@
 #include <array>
 #include <cassert>
 #include <cmath>
-#include <map>
 #include <span>
 
 #include "backend/native_backend.h"
@@ -19,17 +18,6 @@ namespace {
 // A point of a new manifold takes the warm-start impulse of a cached point closer than this
 // fraction of the smaller body's outer radius (in A's frame).
 constexpr double kMatchFraction = 0.05;
-
-// One island's contact phase, computed on local copies (so islands can run on any worker).
-struct IslandSolve {
-    std::vector<int> bodies;              // ascending global indices
-    std::vector<int> manifolds;           // indices into the step's manifold list
-    std::vector<RigidBody> local;         // per local body: after the collision phase
-    std::vector<BodyImpulse> impulses;    // per local body
-    std::vector<ContactManifold> solved;  // per local manifold, with outputs
-    CollisionPhaseReport collision;
-    ContactSolverReport report;
-};
 
 }  // namespace
 
@@ -55,7 +43,9 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     for (int p : touching_) islands_.join(pairs_[static_cast<std::size_t>(p)].a, pairs_[static_cast<std::size_t>(p)].b);
     for (const PairSample& s : samples)
         if (!s.manifolds.empty()) islands_.join(pairs_[static_cast<std::size_t>(s.pair)].a, pairs_[static_cast<std::size_t>(s.pair)].b);
-    std::vector<std::uint8_t> due_root(bodies_.size(), 0);
+    IslandScratch& sc = island_scratch_;
+    std::vector<std::uint8_t>& due_root = sc.due_root;
+    due_root.assign(bodies_.size(), 0);
     bool any_due = false;
     auto markDue = [&](int body) {
         const int root = islands_.islandOf(body);
@@ -80,11 +70,13 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     };
     // The due islands' touching pairs are refreshed from their cached features.
     if (any_due) {
-        std::vector<int> more;
+        std::vector<int>& more = sc.more;
+        more.clear();
         for (int p : touching_)
             if (pairs_[static_cast<std::size_t>(p)].sampled_step != step_index_ && due_root[static_cast<std::size_t>(islandOfPair(p))])
                 more.push_back(p);
-        std::vector<PairSample> extra = samplePairs(more, t);
+        std::vector<PairSample>& extra = step_extra_;
+        samplePairs(more, t, extra);
         samples.insert(samples.end(), std::make_move_iterator(extra.begin()), std::make_move_iterator(extra.end()));
         std::sort(samples.begin(), samples.end(), [](const PairSample& x, const PairSample& y) { return x.pair < y.pair; });
     }
@@ -99,8 +91,10 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // resting islands share their solve times: a settled bin of 100 separate islands is one internal
     // step per sub-step, not one per island.
     const double h = gridTick(t);
-    std::vector<ContactManifold> manifolds;
-    std::vector<std::pair<int, int>> cache_of;   // (pair, part pair) per manifold
+    std::vector<ContactManifold>& manifolds = sc.manifolds;
+    std::vector<std::pair<int, int>>& cache_of = sc.cache_of;  // (pair, part pair) per manifold
+    manifolds.clear();
+    cache_of.clear();
     for (const PairSample& s : samples) {
         PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
         const Pose fa = bodies_[static_cast<std::size_t>(ps.a)].framePose();
@@ -124,7 +118,8 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // (Held: its dynamic bodies drifted with the last solve up to now; a ball bouncing freely in
     // the window was not held, and its bounces keep their restitution.)
     auto held = [&](int body) { return heldAt(body, t); };
-    std::vector<std::uint8_t> resting(manifolds.size(), 0);
+    std::vector<std::uint8_t>& resting = sc.resting;
+    resting.assign(manifolds.size(), 0);
     for (std::size_t m = 0; m < manifolds.size(); ++m)
         resting[m] = pairs_[static_cast<std::size_t>(manifolds[m].pair)].touching && held(manifolds[m].body_a) &&
                              held(manifolds[m].body_b)
@@ -132,19 +127,32 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
                          : 0;
 
     // Collision and contact phase, per island (islands share no dynamic body: any worker, same bits).
-    std::map<int, IslandSolve> by_root;
+    // The islands' solves come from a pool kept across steps (slot_of_root: -1 between steps).
+    sc.slot_of_root.resize(bodies_.size(), -1);
+    sc.used = 0;
     for (std::size_t m = 0; m < manifolds.size(); ++m) {
-        IslandSolve& is = by_root[islandOfPair(manifolds[m].pair)];
+        const int root = islandOfPair(manifolds[m].pair);
+        int& slot = sc.slot_of_root[static_cast<std::size_t>(root)];
+        if (slot < 0) {
+            if (sc.used == sc.pool.size()) sc.pool.emplace_back();
+            slot = static_cast<int>(sc.used++);
+            sc.pool[static_cast<std::size_t>(slot)].reset(root);
+        }
+        IslandSolve& is = sc.pool[static_cast<std::size_t>(slot)];
         is.manifolds.push_back(static_cast<int>(m));
         is.bodies.push_back(manifolds[m].body_a);
         is.bodies.push_back(manifolds[m].body_b);
     }
-    std::vector<IslandSolve*> work;
-    for (auto& [root, is] : by_root) {
+    std::vector<IslandSolve*>& work = sc.work;
+    work.clear();
+    for (std::size_t k = 0; k < sc.used; ++k) {
+        IslandSolve& is = sc.pool[k];
+        sc.slot_of_root[static_cast<std::size_t>(is.root)] = -1;
         std::sort(is.bodies.begin(), is.bodies.end());
         is.bodies.erase(std::unique(is.bodies.begin(), is.bodies.end()), is.bodies.end());
         work.push_back(&is);
     }
+    std::sort(work.begin(), work.end(), [](const IslandSolve* x, const IslandSolve* y) { return x->root < y->root; });
     ContactSolverSettings solver;
     solver.model = settings_.response;
     solver.iterations = settings_.contact_iterations;
@@ -169,20 +177,22 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         auto localOf = [&](int id) {
             return static_cast<int>(std::lower_bound(is.bodies.begin(), is.bodies.end(), id) - is.bodies.begin());
         };
-        std::vector<std::uint8_t> local_resting;
         for (int m : is.manifolds) {
-            ContactManifold lm = manifolds[static_cast<std::size_t>(m)];
+            is.solved.push_back(manifolds[static_cast<std::size_t>(m)]);
+            ContactManifold& lm = is.solved.back();
             lm.body_a = localOf(lm.body_a);
             lm.body_b = localOf(lm.body_b);
-            is.solved.push_back(std::move(lm));
-            local_resting.push_back(resting[static_cast<std::size_t>(m)]);
+            is.resting.push_back(resting[static_cast<std::size_t>(m)]);
         }
-        is.collision = collisionPhase(is.local, is.solved, local_resting, resting_speed, h);
+        collisionPhase(is.local, is.solved, is.resting, resting_speed, h, is.collision);
         is.report = solveContactPhase(is.local, is.solved, h, scene_.gravity, settings, is.impulses);
     };
     // A large island is solved alone, its sweeps shared by all workers (colour groups, see
     // solveContactPhase); the other islands are shared out, one per worker. Same bits either way.
-    std::vector<IslandSolve*> shared, spread;
+    std::vector<IslandSolve*>& shared = sc.shared;
+    std::vector<IslandSolve*>& spread = sc.spread;
+    shared.clear();
+    spread.clear();
     for (IslandSolve* is : work) (is->manifolds.size() >= kTeamManifolds ? shared : spread).push_back(is);
     if (!shared.empty() && partition_->workers() > 1) {
         ContactSolverSettings team = solver;
@@ -194,10 +204,13 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     } else {
         for (IslandSolve* is : shared) solveOne(*is, solver);
     }
-    if (spread.size() > 1 && manifolds.size() >= 16)
-        partition_->run(spread.size(), [&](std::size_t k, int) { solveOne(*spread[k], solver); });
-    else
+    if (spread.size() > 1 && manifolds.size() >= 16) {
+        // One reference captured: std::function stores it in place (no allocation per step).
+        auto solveSpread = [&](std::size_t k) { solveOne(*spread[k], solver); };
+        partition_->run(spread.size(), [&solveSpread](std::size_t k, int) { solveSpread(k); });
+    } else {
         for (IslandSolve* is : spread) solveOne(*is, solver);
+    }
 
     // Results in island order: collision impulses change the bodies now, contact impulses become
     // drifts, manifolds go back to their caches.
@@ -264,10 +277,10 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
 }
 
-CollisionPhaseReport NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                                                   const std::vector<std::uint8_t>& resting, double resting_speed,
-                                                   double tick) const {
-    CollisionPhaseReport report;
+void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                                   const std::vector<std::uint8_t>& resting, double resting_speed, double tick,
+                                   CollisionPhaseReport& report) const {
+    report.ill_conditioned = report.degenerate = report.nonfinite = 0;
     report.impulsed.assign(bodies.size(), 0);
     for (int sweep = 0; sweep < settings_.collision_iterations; ++sweep) {
         bool any = false;
@@ -309,7 +322,6 @@ CollisionPhaseReport NativeBackend::collisionPhase(std::vector<RigidBody>& bodie
         }
         if (!any) break;
     }
-    return report;
 }
 
 bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,

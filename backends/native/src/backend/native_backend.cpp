@@ -107,7 +107,8 @@ void NativeBackend::stepFrame(double dt) {
     frame_dt_ = dt;
     // Every body is valid at the frame start here; its box is swept over the whole frame, and pairs
     // that entered the broad phase are due at once.
-    std::vector<int> entered;
+    std::vector<int>& entered = step_entered_;
+    entered.clear();
     updateBroadPhase(true, entered);
     for (int p : entered) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
@@ -134,7 +135,8 @@ double NativeBackend::internalStep(double t, double remaining, bool unbounded) {
     ++step_index_;
     // 1. Due flight pairs: the queue's pairs whose earliest contact time has come, and every pair
     //    of a body changed from outside (setBodyState, applyImpulse), whose island is due too.
-    std::vector<int> due;
+    std::vector<int>& due = step_due_;
+    due.clear();
     for (int body : changed_) {
         setTick(body, std::min(tick_end_[static_cast<std::size_t>(body)], t));
         for (int p : body_pairs_[static_cast<std::size_t>(body)])
@@ -148,15 +150,18 @@ double NativeBackend::internalStep(double t, double remaining, bool unbounded) {
     stats_.broad_phase_pairs += static_cast<std::int64_t>(candidates_.size());
 
     // 2. Narrow phase of the due pairs; islands with a new contact or a tick due are solved.
-    std::vector<PairSample> samples = samplePairs(due, t);
+    std::vector<PairSample>& samples = step_samples_;
+    samplePairs(due, t, samples);
     solveIslands(samples, t);
     recycleSamples(samples);
 
     // 3. Velocities changed: boxes and the changed bodies' flight pairs are bounded again now, with
     //    the new motion (a ball bouncing off the floor into a slab just above it is met in time).
-    std::vector<int> entered;
+    std::vector<int>& entered = step_entered_;
+    entered.clear();
     updateBroadPhase(false, entered);
-    std::vector<int> again = entered;
+    std::vector<int>& again = step_again_;
+    again.assign(entered.begin(), entered.end());
     for (int body : changed_)
         for (int p : body_pairs_[static_cast<std::size_t>(body)]) {
             const PairState& ps = pairs_[static_cast<std::size_t>(p)];
@@ -165,7 +170,8 @@ double NativeBackend::internalStep(double t, double remaining, bool unbounded) {
     changed_.clear();
     std::sort(again.begin(), again.end());
     again.erase(std::unique(again.begin(), again.end()), again.end());
-    std::vector<PairSample> resampled = samplePairs(again, t);
+    std::vector<PairSample>& resampled = step_resampled_;
+    samplePairs(again, t, resampled);
     recordSamples(resampled);
     for (const PairSample& s : resampled) scheduleSampled(s, t, false);
     recycleSamples(resampled);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "backend/body_shape.h"
+#include "backend/island_scratch.h"
 #include "backend/native_settings.h"
 #include "backend/native_statistics.h"
 #include "backend/part_query.h"
@@ -37,13 +38,6 @@
 #include "vroc/core/backend_vocabulary.h"
 
 namespace vroc::native {
-
-/// What an island's collision phase did: its troubles (counted as warnings by the caller) and which
-/// of its bodies an impulse changed.
-struct CollisionPhaseReport {
-    std::uint64_t ill_conditioned = 0, degenerate = 0, nonfinite = 0;
-    std::vector<std::uint8_t> impulsed;   ///< per body of the island
-};
 
 class NativeBackend final : public Backend {
 public:
@@ -122,8 +116,9 @@ private:
                                   ContactManifold& m);
     /// Narrow phase of one pair at time t (its bodies must be valid at t). Pure in the pair.
     PairSample samplePair(int pair_index);
-    /// Samples the pairs (bodies brought to t first), in parallel above a few pairs.
-    std::vector<PairSample> samplePairs(const std::vector<int>& pairs, double t);
+    /// Samples the pairs (bodies brought to t first) into `samples` (one per pair, in order), in
+    /// parallel above a few pairs.
+    void samplePairs(const std::vector<int>& pairs, double t, std::vector<PairSample>& samples);
     /// Hands the samples' storage back to their pairs for their next sample (the samples are spent).
     void recycleSamples(std::vector<PairSample>& samples);
     /// Counts the samples' narrow-phase statistics and warnings; repairs deep penetration.
@@ -162,11 +157,11 @@ private:
     /// Restitution and friction impulses at approaching manifolds, applied to `bodies` (one island's
     /// local copies; manifolds index them); a `resting` one (held at its last solve) approaching
     /// slower than `resting_speed` [m/s] is stopped plastically (e = 0); `tick` [s] is the island's
-    /// step (speculative points reached within it collide now). Pure in its arguments, so islands
-    /// run on any worker.
-    CollisionPhaseReport collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                                        const std::vector<std::uint8_t>& resting, double resting_speed,
-                                        double tick) const;
+    /// step (speculative points reached within it collide now). What it did goes to `report`
+    /// (reset first). Pure in its arguments, so islands run on any worker.
+    void collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                        const std::vector<std::uint8_t>& resting, double resting_speed, double tick,
+                        CollisionPhaseReport& report) const;
     /// The collision phase of one manifold (Newton-Coulomb): its touching points and the speculative
     /// ones reached within `tick` [s]; one point gets the coupled impulse of newton_coulomb.h, two or
     /// more Newton restitution per point with patch friction (patch_impulse.h). Applied to a and b;
@@ -241,9 +236,13 @@ private:
     std::vector<double> still_since_;       // [s] per body: since when it has been still
     std::vector<int> changed_;              // bodies whose version was bumped since last drained
     std::vector<int> candidates_;           // pairs_ indices of the current broad-phase pairs
+    // Per-step buffers, emptied and refilled at every internal step: no allocation once warm.
+    std::vector<int> broad_next_, step_due_, step_entered_, step_again_;
+    std::vector<PairSample> step_samples_, step_resampled_, step_extra_;
     std::set<int> touching_;                // pairs_ indices of touching pairs (sorted)
     CollisionQueue queue_;                  // flight pairs by earliest possible contact time
     IslandBuilder islands_;
+    IslandScratch island_scratch_;          // the island stage's buffers, reused from step to step
     std::vector<bool> infinite_mass_;       // per body: static or tracked (ground for islands and solves)
     double frame_end_ = 0.0;                // [s] end time of the frame being stepped
     double frame_dt_ = 0.0;                 // [s] its length

@@ -71,8 +71,8 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
     if (!changed && !all) return;
     broad_phase_.update();
     const std::int64_t stamp = ++broad_updates_;
-    std::vector<int> next;
-    next.reserve(broad_phase_.pairs().size());
+    std::vector<int>& next = broad_next_;  // becomes candidates_ (the two trade storage)
+    next.clear();
     for (const BodyPair& bp : broad_phase_.pairs()) {
         PairState& ps = pairState(bp.a, bp.b);
         const int idx = static_cast<int>(&ps - pairs_.data());
@@ -95,7 +95,7 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
         }
         for (PersistentManifold& m : ps.manifolds) m.clear();
     }
-    candidates_ = std::move(next);
+    std::swap(candidates_, next);
     for (auto& list : body_pairs_) list.clear();
     for (int idx : candidates_) {
         const PairState& ps = pairs_[static_cast<std::size_t>(idx)];
@@ -246,7 +246,7 @@ void NativeBackend::setManifoldPoints(const ContactPatch& patch, const Proximity
     }
 }
 
-std::vector<NativeBackend::PairSample> NativeBackend::samplePairs(const std::vector<int>& pairs, double t) {
+void NativeBackend::samplePairs(const std::vector<int>& pairs, double t, std::vector<PairSample>& samples) {
     // Bodies are brought to t serially (the result is thread-count free); a pair's sample is then a
     // pure function of that pair, so any worker count gives the same bits.
     for (int idx : pairs) {
@@ -254,15 +254,17 @@ std::vector<NativeBackend::PairSample> NativeBackend::samplePairs(const std::vec
         syncBody(ps.a, t);
         syncBody(ps.b, t);
     }
-    std::vector<PairSample> samples;
+    // `samples` keeps its storage from step to step (its elements' vectors went back to their
+    // pairs in recycleSamples); each slot is overwritten by its pair's sample.
+    samples.resize(pairs.size());
     if (pairs.size() < kMinParallelPairs) {
-        samples.reserve(pairs.size());
-        for (int idx : pairs) samples.push_back(samplePair(idx));
+        for (std::size_t k = 0; k < pairs.size(); ++k) samples[k] = samplePair(pairs[k]);
     } else {
-        samples = partition_->map<PairSample>(pairs.size(), [&](std::size_t k) { return samplePair(pairs[k]); });
+        // One reference captured: std::function stores it in place (no allocation per call).
+        auto sampleOne = [this, &pairs, &samples](std::size_t k) { samples[k] = samplePair(pairs[k]); };
+        partition_->run(pairs.size(), [&sampleOne](std::size_t k, int) { sampleOne(k); });
     }
     for (const PairSample& s : samples) pairs_[static_cast<std::size_t>(s.pair)].sampled_step = step_index_;
-    return samples;
 }
 
 void NativeBackend::recycleSamples(std::vector<PairSample>& samples) {

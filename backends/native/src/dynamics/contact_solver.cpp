@@ -161,24 +161,32 @@ void relaxPlastic(std::vector<WorkBody>& wb, PointConstraint& c, int& ill) {
 
 // Shock levels: each body's graph distance from the bodies of infinite mass (breadth first over
 // the contact graph, kept as compressed adjacency rows: three allocations, not one per body).
+// The buffers a level search reuses (see SolverScratch).
+struct LevelScratch {
+    std::vector<int> start, adj, fill, queue;
+};
+
 void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies,
-                  const std::vector<PointConstraint>& cs) {
-    std::vector<int> start(wb.size() + 1, 0);
+                  const std::vector<PointConstraint>& cs, LevelScratch& scratch) {
+    std::vector<int>& start = scratch.start;
+    start.assign(wb.size() + 1, 0);
     for (const auto& c : cs) {
         ++start[static_cast<std::size_t>(c.a) + 1];
         ++start[static_cast<std::size_t>(c.b) + 1];
     }
     for (std::size_t i = 0; i < wb.size(); ++i) start[i + 1] += start[i];
-    std::vector<int> adj(static_cast<std::size_t>(start.back()));
+    std::vector<int>& adj = scratch.adj;
+    adj.assign(static_cast<std::size_t>(start.back()), 0);
     {
-        std::vector<int> fill(start.begin(), start.end() - 1);
+        std::vector<int>& fill = scratch.fill;
+        fill.assign(start.begin(), start.end() - 1);
         for (const auto& c : cs) {
             adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.a)]++)] = c.b;
             adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.b)]++)] = c.a;
         }
     }
-    std::vector<int> queue;  // breadth-first order; `head` is the front
-    queue.reserve(wb.size());
+    std::vector<int>& queue = scratch.queue;  // breadth-first order; `head` is the front
+    queue.clear();
     for (std::size_t i = 0; i < wb.size(); ++i) {
         wb[i].level = bodies[i].infiniteMass() ? 0 : kUnreached;
         if (bodies[i].infiniteMass()) queue.push_back(static_cast<int>(i));
@@ -429,22 +437,41 @@ void colourLevel(const std::vector<WorkBody>& wb, const std::vector<Patch*>& up,
     }
 }
 
-SweepSchedule scheduleSweeps(const std::vector<WorkBody>& wb, std::vector<Patch>& patches, bool colour_levels) {
+// The buffers a schedule reuses (see SolverScratch).
+struct ScheduleScratch {
     std::vector<Patch*> up;
-    up.reserve(patches.size());
+    std::vector<int> colour;
+    std::vector<std::uint64_t> used;
+    std::vector<std::size_t> by_colour;
+};
+
+// Sorts are stable by construction (ties broken by position: patches are contiguous, so a patch's
+// address is its order) without the buffer std::stable_sort allocates.
+void scheduleSweeps(const std::vector<WorkBody>& wb, std::vector<Patch>& patches, bool colour_levels,
+                    ScheduleScratch& scratch, SweepSchedule& plan) {
+    plan.order.clear();
+    plan.groups.clear();
+    std::vector<Patch*>& up = scratch.up;
+    up.clear();
     for (Patch& p : patches) up.push_back(&p);
-    std::stable_sort(up.begin(), up.end(), [&](const Patch* x, const Patch* y) { return patchLevel(wb, *x) < patchLevel(wb, *y); });
-    std::vector<int> colour(up.size(), kColours);   // uncoloured: one sequential group per level
-    std::vector<std::uint64_t> used(colour_levels ? wb.size() : 0, 0);
-    SweepSchedule plan;
+    std::sort(up.begin(), up.end(), [&](const Patch* x, const Patch* y) {
+        const int lx = patchLevel(wb, *x), ly = patchLevel(wb, *y);
+        return lx != ly ? lx < ly : x < y;
+    });
+    std::vector<int>& colour = scratch.colour;
+    colour.assign(up.size(), kColours);  // uncoloured: one sequential group per level
+    std::vector<std::uint64_t>& used = scratch.used;
+    used.assign(colour_levels ? wb.size() : 0, 0);
     for (std::size_t begin = 0; begin < up.size();) {
         const int level = patchLevel(wb, *up[begin]);
         std::size_t end = begin;
         while (end < up.size() && patchLevel(wb, *up[end]) == level) ++end;
         if (colour_levels) colourLevel(wb, up, begin, end, used, colour);
-        std::vector<std::size_t> by_colour(end - begin);
+        std::vector<std::size_t>& by_colour = scratch.by_colour;
+        by_colour.resize(end - begin);
         for (std::size_t k = begin; k < end; ++k) by_colour[k - begin] = k;
-        std::stable_sort(by_colour.begin(), by_colour.end(), [&](std::size_t x, std::size_t y) { return colour[x] < colour[y]; });
+        std::sort(by_colour.begin(), by_colour.end(),
+                  [&](std::size_t x, std::size_t y) { return colour[x] != colour[y] ? colour[x] < colour[y] : x < y; });
         for (std::size_t i = 0; i < by_colour.size(); ++i) {
             const std::size_t k = by_colour[i];
             if (i == 0 || colour[k] != colour[by_colour[i - 1]])
@@ -454,7 +481,6 @@ SweepSchedule scheduleSweeps(const std::vector<WorkBody>& wb, std::vector<Patch>
         }
         begin = end;
     }
-    return plan;
 }
 
 // One worker's share of the sweeps (with one worker, all of them). Symmetric Gauss-Seidel in stack
@@ -567,29 +593,52 @@ void warmStart(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, std:
 // Split impulse: pseudo-velocities, separate from the real ones, push patches whose gap is below the
 // floor back towards the target gap; the result is a displacement per body.
 // One constraint per patch at its centroid.
+// One patch's split-impulse push (positionPass).
+struct Push {
+    const PointConstraint* c;
+    double target;  // [m/s] pseudo normal speed wanted
+    double k;       // [1/kg] effective mass inverse
+    int level;      // shock level of the patch (max of its bodies')
+    bool freeze_a, freeze_b;
+    double lambda = 0.0;
+};
+
+// Every buffer one solve needs, kept per thread from solve to solve so that a settled scene's
+// solves allocate nothing (issue 22). One solve at a time per thread: solveContactPhase does not
+// recurse, and a team's workers use the caller's buffers.
+struct SolverScratch {
+    std::vector<WorkBody> wb, predicted, pv;
+    std::vector<PointConstraint> cs, centroids;
+    std::vector<Patch> patches;
+    std::vector<Push> pushes;
+    SweepSchedule plan;
+    std::array<std::vector<double>, 2> changes;
+    LevelScratch levels;
+    ScheduleScratch schedule;
+};
+
+SolverScratch& solverScratch() {
+    thread_local SolverScratch s;
+    return s;
+}
+
 int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies, const std::vector<Patch>& patches,
                  const std::vector<ContactManifold>& manifolds, double h, const ContactSolverSettings& settings,
-                 bool levels_assigned, std::vector<BodyImpulse>& impulses) {
+                 bool levels_assigned, SolverScratch& scratch, std::vector<BodyImpulse>& impulses) {
     if (settings.correction_iterations <= 0 || !(h > 0.0)) return 0;
     // The levels of the contact graph: the velocity sweeps assigned them already, from the same
     // pairs (a patch's points join the bodies its centroid joins).
     if (!levels_assigned) {
-        std::vector<PointConstraint> centroids;
+        std::vector<PointConstraint>& centroids = scratch.centroids;
+        centroids.clear();
         for (const Patch& p : patches) centroids.push_back(p.friction);
-        assignLevels(wb, bodies, centroids);
+        assignLevels(wb, bodies, centroids, scratch.levels);
     }
-    struct Push {
-        const PointConstraint* c;
-        double target;   // [m/s] pseudo normal speed wanted
-        double k;        // [1/kg] effective mass inverse
-        int level;       // shock level of the patch (max of its bodies')
-        bool freeze_a, freeze_b;
-        double lambda = 0.0;
-    };
     // Every patch takes part (pseudo normal speed >= rate x (target - reached) / h, which is
     // negative for a gap above the target): a push never drives a body into a neighbour beyond
     // that neighbour's gap. Nothing runs unless some patch ends below the floor.
-    std::vector<Push> pushes;
+    std::vector<Push>& pushes = scratch.pushes;
+    pushes.clear();
     int below = 0;
     for (const Patch& p : patches) {
         const ContactManifold& mf = manifolds[static_cast<std::size_t>(p.friction.manifold)];
@@ -608,10 +657,13 @@ int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies
                           std::max(la, lb), freeze_a, freeze_b});
     }
     if (below == 0) return 0;
-    std::stable_sort(pushes.begin(), pushes.end(), [](const Push& x, const Push& y) { return x.level < y.level; });
+    // By level, ties in patch order (the constraints live in the contiguous patches).
+    std::sort(pushes.begin(), pushes.end(),
+              [](const Push& x, const Push& y) { return x.level != y.level ? x.level < y.level : x.c < y.c; });
     // Translation only: a push at a patch centroid away from the COM would otherwise tip the body
     // and let its far edge dig into the next body (the pseudo inertia is infinite).
-    std::vector<WorkBody> pv(wb.size());
+    std::vector<WorkBody>& pv = scratch.pv;
+    pv.assign(wb.size(), WorkBody{});
     for (std::size_t i = 0; i < wb.size(); ++i) pv[i].inv_mass = wb[i].inv_mass;
     for (int it = 0; it < settings.correction_iterations; ++it) {
         for (Push& p : pushes) {
@@ -635,7 +687,9 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
                                       const Vec3& gravity, const ContactSolverSettings& settings,
                                       std::vector<BodyImpulse>& impulses) {
     ContactSolverReport report;
-    std::vector<WorkBody> wb(bodies.size());
+    SolverScratch& scratch = solverScratch();
+    std::vector<WorkBody>& wb = scratch.wb;
+    wb.assign(bodies.size(), WorkBody{});
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& rb = bodies[i];
         wb[i].com = rb.com;
@@ -652,8 +706,10 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     }
     // Targets come from the velocities at the step start: a separating point may slow down to
     // minus its start speed (the average stays >= 0); an approaching or resting one must not approach.
-    std::vector<PointConstraint> cs;
-    std::vector<Patch> patches;
+    std::vector<PointConstraint>& cs = scratch.cs;
+    std::vector<Patch>& patches = scratch.patches;
+    cs.clear();
+    patches.clear();
     const bool single_point = settings.model == ResponseModel::Vroc1995;
     auto constraintAt = [&](const ContactManifold& mf, int m, const Vec3& p, double gap) {
         PointConstraint c;
@@ -702,7 +758,8 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         if (!bodies[i].infiniteMass()) wb[i].v += gravity * h;
     }
-    const std::vector<WorkBody> predicted = wb;
+    std::vector<WorkBody>& predicted = scratch.predicted;
+    predicted = wb;
     if (settings.warm_start && !single_point) warmStart(wb, cs, patches, manifolds);
     if (single_point) {
         for (int it = 0; it < settings.iterations; ++it) {
@@ -720,10 +777,11 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
                 ++cold;
         const bool large_cold = manifolds.size() >= kLargeIsland && 2 * cold > manifolds.size();
         const int sweeps = large_cold ? settings.cold_factor * settings.iterations : settings.iterations;
-        assignLevels(wb, bodies, cs);
-        const SweepSchedule plan = scheduleSweeps(wb, patches, manifolds.size() >= kTeamManifolds);
-        std::array<std::vector<double>, 2> changes{std::vector<double>(plan.order.size(), 0.0),
-                                                   std::vector<double>(plan.order.size(), 0.0)};
+        assignLevels(wb, bodies, cs, scratch.levels);
+        SweepSchedule& plan = scratch.plan;
+        scheduleSweeps(wb, patches, manifolds.size() >= kTeamManifolds, scratch.schedule, plan);
+        std::array<std::vector<double>, 2>& changes = scratch.changes;
+        for (std::vector<double>& c : changes) c.assign(plan.order.size(), 0.0);
         const int shock = settings.shock_iterations;
         SweepCounts counts;
         if (settings.team && settings.team_size > 1 && manifolds.size() >= kTeamManifolds) {
@@ -741,7 +799,8 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     }
     // Impulses per body, recovered from the velocity change (covers every pass above).
     impulses.assign(bodies.size(), BodyImpulse{});
-    report.corrected_patches = positionPass(wb, bodies, patches, manifolds, h, settings, !single_point, impulses);
+    report.corrected_patches =
+        positionPass(wb, bodies, patches, manifolds, h, settings, !single_point, scratch, impulses);
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& rb = bodies[i];
         if (rb.infiniteMass()) continue;

@@ -2,6 +2,7 @@
 #include "dynamics/persistent_manifold.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -51,9 +52,11 @@ InlineVector<std::size_t, kMaxManifoldPoints> reduceContactPointIndices(std::spa
         if (i == i0 || i == i1 || i == i2) return -1.0;
         return std::max({-side * area(i0, i1, i), -side * area(i1, i2, i), -side * area(i2, i0, i)});
     });
-    InlineVector<std::size_t, kMaxManifoldPoints> keep{i0, i1, i2, i3};
-    std::sort(keep.begin(), keep.end());
-    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+    std::array<std::size_t, kMaxManifoldPoints> chosen{i0, i1, i2, i3};
+    std::sort(chosen.begin(), chosen.end());
+    InlineVector<std::size_t, kMaxManifoldPoints> keep;
+    for (std::size_t k = 0; k < chosen.size(); ++k)
+        if (k == 0 || chosen[k] != chosen[k - 1]) keep.push_back(chosen[k]);
     return keep;
 }
 

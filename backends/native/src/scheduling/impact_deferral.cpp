@@ -19,7 +19,8 @@ constexpr double kTouchingGapPerSize = 1e-9;
 
 void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, double horizon) {
     // A body in contact with two pairs does not fly freely: its impacts are resolved as before.
-    std::vector<int> touches(bodies_.size(), 0);
+    std::vector<int>& touches = island_scratch_.touches;
+    touches.assign(bodies_.size(), 0);
     for (const PairSample& s : samples) {
         if (s.manifolds.empty()) continue;
         const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];

@@ -17,24 +17,35 @@ struct PairPartition::Pool {
     std::uint64_t generation = 0;
     int pending = 0;
     bool stopping = false;
-    std::function<void(int)> job;
+    // The current job: fn(i, worker) for i in [0, count), i = worker mod stride. Plain fields, not
+    // a std::function of a capturing lambda: handing a job to the workers allocates nothing.
+    const std::function<void(std::size_t, int)>* job = nullptr;
+    std::size_t job_count = 0;
     std::vector<std::exception_ptr> errors;
     std::vector<std::thread> threads;
+
+    /// Worker `worker`'s share of fn over [0, count): every index it owns (PairPartition::ownerOf).
+    void share(const std::function<void(std::size_t, int)>& fn, std::size_t count, int worker) const {
+        const auto stride = threads.size() + 1;
+        for (std::size_t i = static_cast<std::size_t>(worker); i < count; i += stride) fn(i, worker);
+    }
 
     void loop(int worker) {
         std::uint64_t seen = 0;
         for (;;) {
-            std::function<void(int)> current;
+            const std::function<void(std::size_t, int)>* current = nullptr;
+            std::size_t count = 0;
             {
                 std::unique_lock lock(mutex);
                 start.wait(lock, [&] { return stopping || generation != seen; });
                 if (stopping) return;
                 seen = generation;
                 current = job;
+                count = job_count;
             }
             std::exception_ptr error;
             try {
-                current(worker);
+                share(*current, count, worker);
             } catch (...) {
                 error = std::current_exception();
             }
@@ -61,18 +72,17 @@ PairPartition::~PairPartition() {
 }
 
 void PairPartition::run(std::size_t count, const std::function<void(std::size_t, int)>& fn) {
-    const auto stride = static_cast<std::size_t>(workers_);
-    auto share = [&](int worker) {
-        for (std::size_t i = static_cast<std::size_t>(worker); i < count; i += stride) fn(i, worker);
-    };
     if (workers_ == 1 || count <= 1) {
         // Same owners as the threaded path would use, so per-worker outputs match it.
-        for (int w = 0; w < workers_; ++w) share(w);
+        const auto stride = static_cast<std::size_t>(workers_);
+        for (int w = 0; w < workers_; ++w)
+            for (std::size_t i = static_cast<std::size_t>(w); i < count; i += stride) fn(i, w);
         return;
     }
     {
         std::lock_guard lock(pool_->mutex);
-        pool_->job = share;
+        pool_->job = &fn;
+        pool_->job_count = count;
         pool_->pending = workers_ - 1;
         std::fill(pool_->errors.begin(), pool_->errors.end(), nullptr);
         ++pool_->generation;
@@ -80,7 +90,7 @@ void PairPartition::run(std::size_t count, const std::function<void(std::size_t,
     pool_->start.notify_all();
     std::exception_ptr mine;
     try {
-        share(0);
+        pool_->share(fn, count, 0);
     } catch (...) {
         mine = std::current_exception();
     }

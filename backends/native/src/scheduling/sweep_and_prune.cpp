@@ -108,12 +108,12 @@ void SweepAndPrune::applyChanges() {
     if (added_.empty() && dropped_.empty()) return;
     sortUnique(added_);
     sortUnique(dropped_);
-    std::vector<BodyPair> merged;
-    merged.reserve(pairs_.size() + added_.size());
+    std::vector<BodyPair>& merged = merged_;
+    merged.clear();
     std::set_union(pairs_.begin(), pairs_.end(), added_.begin(), added_.end(),
                    std::back_inserter(merged));
-    std::vector<BodyPair> result;
-    result.reserve(merged.size());
+    std::vector<BodyPair>& result = result_;  // trades storage with pairs_ below
+    result.clear();
     std::set_difference(merged.begin(), merged.end(), dropped_.begin(), dropped_.end(),
                         std::back_inserter(result));
     stats_.pairs_added += static_cast<std::int64_t>(merged.size() - pairs_.size());

@@ -75,6 +75,7 @@ private:
     std::vector<BodyPair> pairs_;     // sorted
     std::vector<BodyPair> added_;     // this update's candidate additions
     std::vector<BodyPair> dropped_;   // this update's candidate removals
+    std::vector<BodyPair> merged_, result_;  // applyChanges' buffers, kept between updates
     int pending_new_ = 0;             // bodies added since the last update()
     SweepAndPruneStats stats_;
 };

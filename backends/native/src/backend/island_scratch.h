@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// Storage the island stage (island_step.cpp) reuses from one internal step to the next, so that a
+// settled scene's steps allocate nothing there (issue 22): every buffer is emptied, never freed.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "dynamics/contact.h"
+#include "dynamics/contact_solver.h"
+#include "dynamics/rigid_body.h"
+
+namespace vroc::native {
+
+/// What an island's collision phase did: its troubles (counted as warnings by the caller) and which
+/// of its bodies an impulse changed.
+struct CollisionPhaseReport {
+    std::uint64_t ill_conditioned = 0, degenerate = 0, nonfinite = 0;
+    std::vector<std::uint8_t> impulsed;  ///< per body of the island
+};
+
+/// One island's contact phase, computed on local copies (so islands can run on any worker).
+struct IslandSolve {
+    int root = -1;                        // the island's union-find root (islands run in root order)
+    std::vector<int> bodies;              // ascending global indices
+    std::vector<int> manifolds;           // indices into the step's manifold list
+    std::vector<RigidBody> local;         // per local body: after the collision phase
+    std::vector<BodyImpulse> impulses;    // per local body
+    std::vector<ContactManifold> solved;  // per local manifold, with outputs
+    std::vector<std::uint8_t> resting;    // per local manifold
+    CollisionPhaseReport collision;
+    ContactSolverReport report;
+
+    /// Empties it for another island, keeping the storage.
+    void reset(int island_root) {
+        root = island_root;
+        bodies.clear();
+        manifolds.clear();
+        local.clear();
+        impulses.clear();
+        solved.clear();
+        resting.clear();
+        collision.ill_conditioned = collision.degenerate = collision.nonfinite = 0;
+        collision.impulsed.clear();
+        report = ContactSolverReport{};
+    }
+};
+
+struct IslandScratch {
+    std::vector<std::uint8_t> due_root;         // per body: the island it roots is due
+    std::vector<int> more;                      // touching pairs of due islands still to sample
+    std::vector<ContactManifold> manifolds;     // the step's manifolds
+    std::vector<std::pair<int, int>> cache_of;  // (pair, part pair) per manifold
+    std::vector<std::uint8_t> resting;          // per manifold
+    std::vector<IslandSolve> pool;              // this step's islands in [0, used)
+    std::size_t used = 0;
+    std::vector<int> slot_of_root;  // per body: its island's pool slot this step, or -1
+    std::vector<IslandSolve*> work, shared, spread;
+    std::vector<int> touches;  // per body: manifolds this step (deferImpacts)
+};
+
+}  // namespace vroc::native
