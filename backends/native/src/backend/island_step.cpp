@@ -2,8 +2,6 @@
 // Islands of the native step: bodies joined by touching pairs are solved together, at their
 // island's tick or when a contact appears in it, and nowhere else (docs/native-dynamics.md).
 #include <algorithm>
-#include <array>
-#include <cassert>
 #include <cmath>
 #include <span>
 
@@ -334,33 +332,29 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
     const double cd = scene_.collision_distance;
     const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
     auto approach = [&](const Vec3& p) { return -((b.velocity + wb.cross(p - b.com)) - (a.velocity + wa.cross(p - a.com))).dot(m.normal); };
-    // Every manifold passes here at every collision sweep: its points in fixed arrays.
-    assert(m.points.size() <= static_cast<std::size_t>(kMaxPatchPoints));  // four touching, four speculative
-    std::array<Vec3, kMaxPatchPoints> selected;
-    std::array<double, kMaxPatchPoints> selected_restitution{};
-    std::size_t count = 0;
+    // Every manifold passes here at every collision sweep: its points in place, as the manifold's.
+    PointArray<Vec3> selected;
+    PointArray<double> selected_restitution;
     double fastest = 0.0;   // [m/s] largest approach speed of a selected point
-    for (std::size_t i = 0; i < std::min(m.points.size(), selected.size()); ++i) {
+    for (std::size_t i = 0; i < m.points.size(); ++i) {
         const double in = approach(m.points[i]);
         if (i < m.point_gap.size() && !(m.point_gap[i] < cd) && !(in * tick >= m.point_gap[i] - 0.5 * cd)) continue;
         const bool plastic = in < settings_.restitution_threshold || (resting && in <= resting_speed);
-        selected[count] = m.points[i];
-        selected_restitution[count] = plastic ? 0.0 : m.restitution;
-        ++count;
+        selected.push_back(m.points[i]);
+        selected_restitution.push_back(plastic ? 0.0 : m.restitution);
         fastest = std::max(fastest, in);
     }
-    if (count == 0 || !(fastest > 0.0)) return false;
+    if (selected.empty() || !(fastest > 0.0)) return false;
     // A resting patch (held by the last solve) approaching slower than gravity closes in a tick is
     // stopped plastically at its touching centroid, one impulse as in issue 9 (a pile's patches,
     // every tick); a faster one (an impact, a rocking plate) is resolved over its points.
     if (resting && fastest <= resting_speed) {
-        selected[0] = m.centroid;
-        selected_restitution[0] = 0.0;
-        count = 1;
+        selected.assign(1, m.centroid);
+        selected_restitution.assign(1, 0.0);
         if (!(approach(m.centroid) > 0.0)) return false;
     }
-    const std::span<const Vec3> points(selected.data(), count);
-    const std::span<const double> restitution(selected_restitution.data(), count);
+    const std::span<const Vec3> points(selected.data(), selected.size());
+    const std::span<const double> restitution(selected_restitution.data(), selected_restitution.size());
     if (points.size() == 1) {   // one point: the coupled sticking / sliding impulse there
         const ImpulseResult r = newtonCoulombImpulse(a, b, points[0], m.normal, restitution[0], m.friction);
         if (r.trouble == ImpulseTrouble::IllConditioned) ++report.ill_conditioned;

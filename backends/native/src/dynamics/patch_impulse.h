@@ -12,13 +12,14 @@
 #include <span>
 #include <vector>
 
+#include "dynamics/contact.h"
 #include "dynamics/impulse_result.h"
 #include "dynamics/rigid_body.h"
 
 namespace vroc::native {
 
-/// At most this many points in a patch: a manifold keeps at most four touching and four speculative.
-constexpr int kMaxPatchPoints = 8;
+/// At most this many points in a patch: a manifold's (four touching and four speculative).
+constexpr int kMaxPatchPoints = static_cast<int>(kMaxManifoldSlots);
 
 struct PatchImpulse {
     std::vector<double> normal;          ///< [N s] per point, >= 0, along n (on B; -on A)
