@@ -1,10 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mesh_import.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <system_error>
 
 #include <assimp/Importer.hpp>
@@ -12,6 +9,8 @@
 #include <assimp/scene.h>
 #include <fmt/format.h>
 
+#include "glb_check.h"
+#include "ply_check.h"
 #include "vroc/core/errors.h"
 
 namespace vroc {
@@ -36,24 +35,6 @@ void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent
     for (unsigned int c = 0; c < node.mNumChildren; ++c) collect(scene, *node.mChildren[c], transform, scale, out);
 }
 
-// A PLY file (by extension or by its "ply" magic, which assimp also recognises) must close its
-// header with an end_header line: assimp 5.2.5 (Debian 12) loops without end, allocating all the
-// while, on a PLY file without one (found by tests/fuzz/mesh_import_fuzz, docs/fuzzing.md).
-bool plyWithoutEndHeader(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::string line;
-    if (!std::getline(in, line)) return false;
-    std::string extension = std::filesystem::path(file).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension != ".ply" && line.rfind("ply", 0) != 0) return false;
-    do {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line == "end_header") return false;
-    } while (std::getline(in, line));
-    return true;
-}
-
 }  // namespace
 
 std::vector<MeshPoints> importMeshPoints(const std::string& file, const Vec3& scale,
@@ -62,9 +43,12 @@ std::vector<MeshPoints> importMeshPoints(const std::string& file, const Vec3& sc
     if (!std::filesystem::is_regular_file(file, ec))
         throw InputError(fmt::format("{}: mesh file '{}' not found (paths are relative to the scene file)",
                                      context, file));
-    if (plyWithoutEndHeader(file))
-        throw InputError(fmt::format("{}: cannot read mesh file '{}': a PLY header must end with an end_header line",
-                                     context, file));
+    if (isPlyFile(file))
+        if (const auto problem = plyProblem(file))
+            throw InputError(fmt::format("{}: cannot read mesh file '{}' as PLY: {}", context, file, *problem));
+    if (isGlbFile(file))
+        if (const auto problem = glbProblem(file))
+            throw InputError(fmt::format("{}: cannot read mesh file '{}' as binary glTF: {}", context, file, *problem));
     Assimp::Importer importer;
     // Keep each mesh of the file as one part: no post-processing that merges or splits meshes.
     // (OBJ meshes come one per `o`/`g` group; a group with several materials would be split.)
