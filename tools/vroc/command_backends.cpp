@@ -47,7 +47,7 @@ int listBackends(const BackendsOptions& options) {
     return 0;
 }
 
-Action setup(CLI::App& sub, const Context&) {
+Action setupBackends(CLI::App& sub, const Context&) {
     auto options = std::make_shared<BackendsOptions>();
     sub.add_flag("--names", options->names_only, "Print only the backend names, one per line (for scripts)");
     return [options] { return listBackends(*options); };
@@ -56,7 +56,7 @@ Action setup(CLI::App& sub, const Context&) {
 }  // namespace
 
 Command makeBackendsCommand() {
-    return {"backends", "List the registered physics backends: description, version and --set keys", &setup};
+    return {"backends", "List the registered physics backends: description, version and --set keys", &setupBackends};
 }
 
 }  // namespace vroc::cli

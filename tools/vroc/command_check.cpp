@@ -82,7 +82,7 @@ int check(CheckArgs& a, const Context& context) {
     return code;
 }
 
-Action setup(CLI::App& sub, const Context& context) {
+Action setupCheck(CLI::App& sub, const Context& context) {
     auto a = std::make_shared<CheckArgs>();
     sub.add_option("--backends", a->backends, "Backends to check, comma-separated (default: all)");
     sub.add_option("--out,-o", a->out_dir, "Output directory (default runs/check-<set>-<time>/)");
@@ -110,7 +110,7 @@ Action setup(CLI::App& sub, const Context& context) {
 }  // namespace
 
 Command makeCheckCommand() {
-    return {"check", "Analytic accuracy and stability suite; exit 1 if native fails a required check", &setup};
+    return {"check", "Analytic accuracy and stability suite; exit 1 if native fails a required check", &setupCheck};
 }
 
 }  // namespace vroc::cli

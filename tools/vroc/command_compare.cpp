@@ -51,7 +51,7 @@ int compare(CompareArgs& a, const Context& context) {
     return 0;
 }
 
-Action setup(CLI::App& sub, const Context& context) {
+Action setupCompare(CLI::App& sub, const Context& context) {
     auto a = std::make_shared<CompareArgs>();
     sub.add_option("scene", a->scene_file, "Scene file (vroc-scene/1 JSON)")->required();
     sub.add_option("--backends", a->backends, "Backends to compare, comma-separated; the first is the reference (default: all)");
@@ -72,7 +72,8 @@ Action setup(CLI::App& sub, const Context& context) {
 }  // namespace
 
 Command makeCompareCommand() {
-    return {"compare", "Run a scene on several backends; divergence, events, invariants, timings, report.html", &setup};
+    return {"compare", "Run a scene on several backends; divergence, events, invariants, timings, report.html",
+            &setupCompare};
 }
 
 }  // namespace vroc::cli

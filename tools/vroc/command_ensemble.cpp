@@ -60,7 +60,7 @@ int ensemble(EnsembleArgs& a, const Context& context) {
     return 0;
 }
 
-Action setup(CLI::App& sub, const Context& context) {
+Action setupEnsemble(CLI::App& sub, const Context& context) {
     auto a = std::make_shared<EnsembleArgs>();
     sub.add_option("scene", a->scene, "Scene file")->required();
     sub.add_option("--backends", a->backends, "Backends, comma-separated, at least two (default: all)");
@@ -87,7 +87,8 @@ Action setup(CLI::App& sub, const Context& context) {
 }  // namespace
 
 Command makeEnsembleCommand() {
-    return {"ensemble", "Perturbed ensembles per backend; which observables distinguish the backends (survives chaos)", &setup};
+    return {"ensemble", "Perturbed ensembles per backend; which observables distinguish the backends (survives chaos)",
+            &setupEnsemble};
 }
 
 }  // namespace vroc::cli

@@ -70,7 +70,7 @@ std::string hmdKeysHelp() {
     return help;
 }
 
-Action setup(CLI::App& sub, const Context&) {
+Action setupPlay(CLI::App& sub, const Context&) {
     auto o = std::make_shared<PlayCliOptions>();
     sub.add_option("scene", o->play.scene_path, "Scene file (vroc-scene/1 JSON)")->required();
     sub.add_option("--backend,-b", o->play.backend, "Physics backend (see `vroc backends`)");
@@ -106,7 +106,7 @@ Action setup(CLI::App& sub, const Context&) {
 }  // namespace
 
 Command makePlayCommand() {
-    return {"play", "Run device -> backend -> HMD model -> OSMesa renderer; write frames and play.json", &setup};
+    return {"play", "Run device -> backend -> HMD model -> OSMesa renderer; write frames and play.json", &setupPlay};
 }
 
 }  // namespace vroc::cli

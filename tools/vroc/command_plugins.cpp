@@ -64,7 +64,7 @@ int listPlugins(const PluginsOptions& options) {
     return status;
 }
 
-Action setup(CLI::App& sub, const Context&) {
+Action setupPlugins(CLI::App& sub, const Context&) {
     auto options = std::make_shared<PluginsOptions>();
     sub.add_option("--plugin", options->plugins, "Also load this plugin file (or name); repeatable");
     sub.add_flag("--names", options->names_only, "Print only the plugin names, one per line (for scripts)");
@@ -74,7 +74,7 @@ Action setup(CLI::App& sub, const Context&) {
 }  // namespace
 
 Command makePluginsCommand() {
-    return {"plugins", "List the device plugins found: name, version, capabilities, devices and file", &setup};
+    return {"plugins", "List the device plugins found: name, version, capabilities, devices and file", &setupPlugins};
 }
 
 }  // namespace vroc::cli

@@ -27,7 +27,7 @@ int report(const ReportArgs& a) {
     return 0;
 }
 
-Action setup(CLI::App& sub, const Context&) {
+Action setupReport(CLI::App& sub, const Context&) {
     auto a = std::make_shared<ReportArgs>();
     sub.add_option("dirs", a->dirs, "Directories of earlier compare/check/sweep/ensemble runs (each holds metrics.json)")->required();
     sub.add_option("--out,-o", a->out_dir, "Where to write report.html (default: the directory itself, or runs/report-merged for several)");
@@ -37,7 +37,7 @@ Action setup(CLI::App& sub, const Context&) {
 }  // namespace
 
 Command makeReportCommand() {
-    return {"report", "Rebuild or merge report.html from metrics.json of earlier runs", &setup};
+    return {"report", "Rebuild or merge report.html from metrics.json of earlier runs", &setupReport};
 }
 
 }  // namespace vroc::cli

@@ -143,7 +143,7 @@ int run(const RunOptions& options, const Context& context) {
     return 0;
 }
 
-Action setup(CLI::App& sub, const Context& context) {
+Action setupRun(CLI::App& sub, const Context& context) {
     auto o = std::make_shared<RunOptions>();
     sub.add_option("scene", o->scene_file, "Scene file (vroc-scene/1 JSON, see docs/scene-format.md)")->required();
     sub.add_option("--backend,-b", o->backend, "Physics backend to use (see `vroc backends`)");
@@ -176,7 +176,7 @@ Action setup(CLI::App& sub, const Context& context) {
 }  // namespace
 
 Command makeRunCommand() {
-    return {"run", "Simulate a scene on one backend; write trajectory.csv, events.csv, run.json", &setup};
+    return {"run", "Simulate a scene on one backend; write trajectory.csv, events.csv, run.json", &setupRun};
 }
 
 }  // namespace vroc::cli

@@ -65,7 +65,7 @@ int sweep(SweepArgs& a, const Context& context) {
     return 0;
 }
 
-Action setup(CLI::App& sub, const Context& context) {
+Action setupSweep(CLI::App& sub, const Context& context) {
     auto a = std::make_shared<SweepArgs>();
     sub.add_option("scene", a->scene, "Scene file, or check:<id> for a built-in check scene with a closed form")->required();
     sub.add_option("--backends", a->backends, "Backends, comma-separated (default: all)");
@@ -92,7 +92,8 @@ Action setup(CLI::App& sub, const Context& context) {
 }  // namespace
 
 Command makeSweepCommand() {
-    return {"sweep", "Speed vs accuracy over frame steps and model detail; Pareto front, robustness limit", &setup};
+    return {"sweep", "Speed vs accuracy over frame steps and model detail; Pareto front, robustness limit",
+            &setupSweep};
 }
 
 }  // namespace vroc::cli

@@ -8,8 +8,8 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
-#include <Eigen/QR>
 
+#include "dynamics/pseudo_inverse.h"
 #include "scheduling/spin_barrier.h"
 
 namespace vroc::native {
@@ -247,15 +247,6 @@ double relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint
     return std::abs(d) * k * p.torsion_radius;   // as a speed at the patch's rim
 }
 
-// The minimum-norm inverse of an N x N normal block, N = 2..4, in the top-left corner of `inv`:
-// fixed-size, so the decomposition unrolls and allocates nothing. The general path, for patches
-// whose points are (nearly) collinear or whose mass block is singular.
-template <int N>
-void pseudoInverseInto(const Eigen::Matrix4d& m, Eigen::Matrix4d& inv) {
-    const Eigen::Matrix<double, N, N> block = m.topLeftCorner<N, N>();
-    inv.topLeftCorner<N, N>() = Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix<double, N, N>>(block).pseudoInverse();
-}
-
 // The normal block of a patch in closed form. The points share the normal n, so a point's normal
 // relative velocity is an affine function of its place in the patch plane: with s_i = (p_i - c) x n
 // (c the centroid) and tau_i = (1, s_i.t1, s_i.t2), the block is M = T G T^T, T the N x 3 matrix of
@@ -324,9 +315,9 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
             m(i, j) = ci.n.dot(du);
         }
     }
-    if (n == 2) pseudoInverseInto<2>(m, inv);
-    if (n == 3) pseudoInverseInto<3>(m, inv);
-    if (n == 4) pseudoInverseInto<4>(m, inv);
+    // The general path, for patches whose points are (nearly) collinear or whose mass block is
+    // singular: the minimum-norm inverse.
+    pseudoInverseInto(n, m, inv);
 }
 
 bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p,
