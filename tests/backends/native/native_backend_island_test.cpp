@@ -83,9 +83,37 @@ TEST(NativeIslands, RestingPileIsSolvedOncePerTick) {
         // Two islands, each solved at each of its ticks: 2 x substeps solves per frame.
         EXPECT_EQ(st.at("native.contact_solves"), 2.0 * substeps * 60) << "substeps " << substeps;
         EXPECT_EQ(st.at("internal_steps"), substeps * 60.0) << "substeps " << substeps;
+        // Why they ran: each island's first solve when its contacts are found, every other one on
+        // the grid, no protection tick; each island is a stack of 6 and its floor.
+        EXPECT_EQ(st.at("native.solves_new_contact"), 2.0) << "substeps " << substeps;
+        EXPECT_EQ(st.at("native.solves_on_grid"), st.at("native.contact_solves") - 2.0) << "substeps " << substeps;
+        EXPECT_EQ(st.at("native.solves_protection"), 0.0) << "substeps " << substeps;
+        EXPECT_EQ(st.at("native.solved_bodies_per_solve"), 7.0) << "substeps " << substeps;
         for (int body = 1; body < static_cast<int>(s.bodies.size()); ++body)
             EXPECT_LT(be->bodyState(body).linear_velocity.norm(), 1e-6);
     }
+}
+
+// The solve counts say why each solve ran, and add up: a spinning box dropped on its corner has a
+// new contact (its landing), protection ticks (its tumbling vertices may close before the next
+// grid tick: the per-point bound) and grid ticks once it lies still.
+TEST(NativeIslands, SolveCountsSayWhyEachSolveRan) {
+    const double cd = 1e-3;
+    int mat = -1;
+    Scene s = restingScene(cd, mat);
+    const Quat tilt(Eigen::AngleAxisd(0.6, Vec3(1, 1, 0).normalized()));
+    addBody(s, "box", Shape::box(Vec3(0.25, 0.25, 0.25)), at(Vec3(0, 0, 1.0), tilt), mat, false, 1.0);
+    s.bodies.back().angular_velocity = Vec3(3, -2, 5);
+    auto be = makeBackend(s);
+    for (int f = 0; f < 180; ++f) be->stepFrame(s.frame_dt);
+    const auto st = be->statistics();
+    EXPECT_EQ(st.at("native.solves_on_grid") + st.at("native.solves_protection") + st.at("native.solves_new_contact"),
+              st.at("native.contact_solves"));
+    EXPECT_GE(st.at("native.solves_new_contact"), 1.0);
+    EXPECT_GT(st.at("native.solves_protection"), 0.0);
+    EXPECT_GT(st.at("native.solves_on_grid"), 60.0);  // at rest for the last second at least
+    EXPECT_EQ(st.at("native.solved_bodies_per_solve"), 2.0);
+    EXPECT_LT(be->bodyState(1).linear_velocity.norm(), 1e-6);
 }
 
 TEST(NativeIslands, MassRatioStackHolds) {

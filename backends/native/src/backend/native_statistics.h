@@ -29,6 +29,13 @@ struct NativeStatistics {
     std::int64_t position_corrections = 0;   ///< patches the split-impulse pass pushed back to the window
     std::int64_t max_island_bodies = 0;      ///< bodies (static ones included) of the largest island solved
     std::int64_t islands_slept = 0;          ///< islands put to sleep (native.sleeping)
+    /// Why each island solve ran (they add up to step_solves): its tick came on the grid of
+    /// sub-steps; its tick came off the grid (a protection tick: a touching pair could otherwise
+    /// close too far before the next grid tick); or a contact appeared in it before its tick.
+    std::int64_t solves_on_grid = 0;
+    std::int64_t solves_protection = 0;
+    std::int64_t solves_new_contact = 0;
+    std::int64_t solved_island_bodies = 0;  ///< bodies of the islands solved, summed over solves
 
     /// Shared names (docs/backend-contract.md) as they are; the rest get the "native." prefix.
     Statistics report() const {
@@ -58,6 +65,11 @@ struct NativeStatistics {
         s["position_corrections"] = static_cast<double>(position_corrections);
         s["max_island_bodies"] = static_cast<double>(max_island_bodies);
         s["islands_slept"] = static_cast<double>(islands_slept);
+        s["solves_on_grid"] = static_cast<double>(solves_on_grid);
+        s["solves_protection"] = static_cast<double>(solves_protection);
+        s["solves_new_contact"] = static_cast<double>(solves_new_contact);
+        s["solved_bodies_per_solve"] =
+            static_cast<double>(solved_island_bodies) / static_cast<double>(std::max<std::int64_t>(1, step_solves));
         return vocabulary::prefixed(s, "native");
     }
 };
