@@ -2,13 +2,10 @@
 #include "glb_check.h"
 
 #include <cstdint>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <string_view>
 
 #include <fmt/format.h>
+
+#include "file_bytes.h"
 
 namespace vroc {
 
@@ -24,16 +21,12 @@ std::uint32_t littleEndian32(const std::string& bytes, std::size_t at) {
 
 }  // namespace
 
-bool isGlbFile(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    char magic[4] = {};
-    return in.read(magic, 4) && std::string_view(magic, 4) == "glTF";
-}
+bool isGlbFile(const std::string& file) { return fileStartsWith(file, "glTF"); }
 
 std::optional<std::string> glbProblem(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return std::string("cannot open the file");
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::optional<std::string> read = fileBytes(file);
+    if (!read) return std::string("cannot read the file");
+    const std::string& bytes = *read;
     if (bytes.size() < 12) return fmt::format("the file has {} bytes, fewer than a GLB header's 12", bytes.size());
     const std::uint32_t version = littleEndian32(bytes, 4);
     const std::uint32_t length = littleEndian32(bytes, 8);

@@ -9,13 +9,13 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
+
+#include "file_bytes.h"
 
 namespace vroc {
 
@@ -335,19 +335,15 @@ bool isPlyFile(const std::string& file) {
     std::string extension = std::filesystem::path(file).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension == ".ply") return true;
-    std::ifstream in(file, std::ios::binary);
-    char magic[3] = {};
-    return in.read(magic, 3) && std::string_view(magic, 3) == "ply";
+    return extension == ".ply" || fileStartsWith(file, "ply");
 }
 
 std::optional<std::string> plyProblem(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return std::string("cannot open the file");
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::optional<std::string> bytes = fileBytes(file);
+    if (!bytes) return std::string("cannot read the file");
     Header header;
-    if (auto problem = readHeader(bytes, header)) return problem;
-    return header.format == Format::ascii ? checkAsciiBody(bytes, header) : checkBinaryBody(bytes, header);
+    if (auto problem = readHeader(*bytes, header)) return problem;
+    return header.format == Format::ascii ? checkAsciiBody(*bytes, header) : checkBinaryBody(*bytes, header);
 }
 
 }  // namespace vroc

@@ -4,8 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <system_error>
@@ -14,6 +13,7 @@
 #include <fmt/ranges.h>
 
 #include "did_you_mean.h"
+#include "file_bytes.h"
 #include "scene_limits.h"
 #include "scene_loader_internal.h"
 #include "sha256.h"
@@ -196,10 +196,9 @@ Scene loadScene(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw InputError(fmt::format("{}: scene file not found or not a regular file (expected a readable vroc-scene/1 JSON file)", path));
-    std::ifstream in(path, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) throw InputError(fmt::format("{}: cannot read scene file", path));
-    Scene scene = loadSceneFromString(text, path);
+    const std::optional<std::string> text = fileBytes(path);
+    if (!text) throw InputError(fmt::format("{}: cannot read scene file", path));
+    Scene scene = loadSceneFromString(*text, path);
     scene.source_path = path;
     return scene;
 }
