@@ -2,18 +2,19 @@
 // The spacenav plugin with the real libspnav against a test spacenavd (spacenavd_test_daemon.h).
 // The host clock is frozen while each event travels, so every event carries a known host time and
 // the integrated pose has a closed form, recomputed here from the counts sent.
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <bit>
 #include <chrono>
 #include <cmath>
 #include <thread>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
 
 #include "plugin_test_host.h"
 #include "spacenavd_test_daemon.h"
 #include "vroc/core/errors.h"
+#include "wait_for.h"
 
 namespace vroc::plugins::test {
 namespace {
@@ -25,15 +26,7 @@ std::string socketPath(const std::string& tag) {
     return ::testing::TempDir() + "vroc-spnav-" + std::to_string(getpid()) + "-" + tag + ".sock";
 }
 
-// Polls until `done` or about ten seconds pass (the machine may be busy).
-template <class F>
-bool waitFor(F&& done) {
-    for (int i = 0; i < 5000; ++i) {
-        if (done()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    return done();
-}
+using vroc::test::waitFor;  // tests/support/wait_for.h
 
 // Segments of constant motion in VROC's frame, written out by hand from the counts sent (full
 // scale 350, max_speed 0.5 m/s, max_rate 90 deg/s; spacenavd (x, y, z) -> VROC (z, -x, y), the

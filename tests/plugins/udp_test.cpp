@@ -1,20 +1,21 @@
 // SPDX-License-Identifier: MIT
 // The udp plugin on loopback: a sender socket writes opentrack datagrams to an ephemeral port.
 #include <arpa/inet.h>
-#include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <array>
 #include <bit>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <thread>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
 
 #include "opentrack_sender.h"
 #include "plugin_test_host.h"
+#include "wait_for.h"
 
 namespace vroc::plugins::test {
 namespace {
@@ -52,15 +53,7 @@ private:
     sockaddr_in to_{};
 };
 
-// Polls until `done` or ten seconds pass (the machine may be busy).
-template <class F>
-bool waitFor(F&& done) {
-    for (int i = 0; i < 2000; ++i) {
-        if (done()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return done();
-}
+using vroc::test::waitFor;  // tests/support/wait_for.h
 
 TEST(UdpPlugin, ReceivesOpentrackDatagramsAndDropsBadOnes) {
     auto capture = std::make_shared<LogCapture>();
