@@ -14,10 +14,4 @@ std::optional<std::string> fileBytes(const std::string& file) {
     return bytes;
 }
 
-bool fileStartsWith(const std::string& file, std::string_view magic) {
-    std::ifstream in(file, std::ios::binary);
-    std::string head(magic.size(), '\0');
-    return in.read(head.data(), static_cast<std::streamsize>(head.size())) && head == magic;
-}
-
 }  // namespace vroc

@@ -5,15 +5,13 @@
 
 #include <fmt/format.h>
 
-#include "file_bytes.h"
-
 namespace vroc {
 
 namespace {
 
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON", little-endian
 
-std::uint32_t littleEndian32(const std::string& bytes, std::size_t at) {
+std::uint32_t littleEndian32(std::string_view bytes, std::size_t at) {
     const auto* b = reinterpret_cast<const unsigned char*>(bytes.data() + at);
     return static_cast<std::uint32_t>(b[0]) | static_cast<std::uint32_t>(b[1]) << 8 |
            static_cast<std::uint32_t>(b[2]) << 16 | static_cast<std::uint32_t>(b[3]) << 24;
@@ -21,12 +19,9 @@ std::uint32_t littleEndian32(const std::string& bytes, std::size_t at) {
 
 }  // namespace
 
-bool isGlbFile(const std::string& file) { return fileStartsWith(file, "glTF"); }
+bool isGlbFile(std::string_view bytes) { return bytes.starts_with("glTF"); }
 
-std::optional<std::string> glbProblem(const std::string& file) {
-    const std::optional<std::string> read = fileBytes(file);
-    if (!read) return std::string("cannot read the file");
-    const std::string& bytes = *read;
+std::optional<std::string> glbProblem(std::string_view bytes) {
     if (bytes.size() < 12) return fmt::format("the file has {} bytes, fewer than a GLB header's 12", bytes.size());
     const std::uint32_t version = littleEndian32(bytes, 4);
     const std::uint32_t length = littleEndian32(bytes, 8);

@@ -7,17 +7,18 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace vroc {
 
-/// True if `file` starts with the GLB magic "glTF" (assimp picks its binary glTF importers by it,
-/// whatever the extension).
-bool isGlbFile(const std::string& file);
+/// True if a file's bytes start with the GLB magic "glTF" (assimp picks its binary glTF importers by
+/// it, whatever the extension).
+bool isGlbFile(std::string_view bytes);
 
-/// The first problem of the GLB framing of `file`, or nothing: a 12-byte header (magic, version 1
+/// The first problem of the GLB framing of a file's bytes, or nothing: a 12-byte header (magic, version 1
 /// or 2, total length at most the file's size); version 2: chunks of 8-byte headers whose lengths
 /// stay within the total, the first one JSON; version 1: the content length (and its format 0,
 /// JSON) within the total.
-std::optional<std::string> glbProblem(const std::string& file);
+std::optional<std::string> glbProblem(std::string_view bytes);
 
 }  // namespace vroc

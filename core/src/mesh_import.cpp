@@ -2,6 +2,7 @@
 #include "mesh_import.h"
 
 #include <filesystem>
+#include <optional>
 #include <system_error>
 
 #include <assimp/Importer.hpp>
@@ -9,6 +10,7 @@
 #include <assimp/scene.h>
 #include <fmt/format.h>
 
+#include "file_bytes.h"
 #include "glb_check.h"
 #include "ply_check.h"
 #include "vroc/core/errors.h"
@@ -43,11 +45,14 @@ std::vector<MeshPoints> importMeshPoints(const std::string& file, const Vec3& sc
     if (!std::filesystem::is_regular_file(file, ec))
         throw InputError(fmt::format("{}: mesh file '{}' not found (paths are relative to the scene file)",
                                      context, file));
-    if (isPlyFile(file))
-        if (const auto problem = plyProblem(file))
+    // The file's bytes, read once for the checks of the formats assimp is known to mishandle.
+    const std::optional<std::string> bytes = fileBytes(file);
+    if (!bytes) throw InputError(fmt::format("{}: cannot read mesh file '{}'", context, file));
+    if (isPlyFile(file, *bytes))
+        if (const auto problem = plyProblem(*bytes))
             throw InputError(fmt::format("{}: cannot read mesh file '{}' as PLY: {}", context, file, *problem));
-    if (isGlbFile(file))
-        if (const auto problem = glbProblem(file))
+    if (isGlbFile(*bytes))
+        if (const auto problem = glbProblem(*bytes))
             throw InputError(fmt::format("{}: cannot read mesh file '{}' as binary glTF: {}", context, file, *problem));
     Assimp::Importer importer;
     // Keep each mesh of the file as one part: no post-processing that merges or splits meshes.

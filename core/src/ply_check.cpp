@@ -15,8 +15,6 @@
 
 #include <fmt/format.h>
 
-#include "file_bytes.h"
-
 namespace vroc {
 
 namespace {
@@ -331,19 +329,17 @@ std::optional<std::string> checkAsciiBody(std::string_view bytes, const Header& 
 
 }  // namespace
 
-bool isPlyFile(const std::string& file) {
+bool isPlyFile(const std::string& file, std::string_view bytes) {
     std::string extension = std::filesystem::path(file).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension == ".ply" || fileStartsWith(file, "ply");
+    return extension == ".ply" || bytes.starts_with("ply");
 }
 
-std::optional<std::string> plyProblem(const std::string& file) {
-    const std::optional<std::string> bytes = fileBytes(file);
-    if (!bytes) return std::string("cannot read the file");
+std::optional<std::string> plyProblem(std::string_view bytes) {
     Header header;
-    if (auto problem = readHeader(*bytes, header)) return problem;
-    return header.format == Format::ascii ? checkAsciiBody(*bytes, header) : checkBinaryBody(*bytes, header);
+    if (auto problem = readHeader(bytes, header)) return problem;
+    return header.format == Format::ascii ? checkAsciiBody(bytes, header) : checkBinaryBody(bytes, header);
 }
 
 }  // namespace vroc

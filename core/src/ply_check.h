@@ -9,15 +9,16 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace vroc {
 
-/// True if `file` is to be read as PLY: its extension is .ply (any case) or it starts with "ply"
-/// (assimp recognises the magic too).
-bool isPlyFile(const std::string& file);
+/// True if the file named `file`, whose bytes are `bytes`, is to be read as PLY: its extension is
+/// .ply (any case) or it starts with "ply" (assimp recognises the magic too).
+bool isPlyFile(const std::string& file, std::string_view bytes);
 
-/// The first problem of PLY file `file` ("line 3: expected ...", "element `face` #2: ..."), or
-/// nothing if it follows the format:
+/// The first problem of the PLY file whose bytes are `bytes` ("line 3: expected ...",
+/// "element `face` #2: ..."), or nothing if it follows the format:
 /// - header: `ply`; `format ascii|binary_little_endian|binary_big_endian 1.0`; `comment` and
 ///   `obj_info` lines; `element NAME COUNT`; `property TYPE NAME` and
 ///   `property list COUNT_TYPE TYPE NAME` after an element, names unique within it; `end_header`.
@@ -27,6 +28,6 @@ bool isPlyFile(const std::string& file);
 ///   token per scalar, a list count followed by that many numbers, integers where the type is an
 ///   integer); list counts not negative; a face's `vertex_indices` (or `vertex_index`) at least 3
 ///   indices, each naming a declared vertex.
-std::optional<std::string> plyProblem(const std::string& file);
+std::optional<std::string> plyProblem(std::string_view bytes);
 
 }  // namespace vroc

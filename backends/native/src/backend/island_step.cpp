@@ -45,7 +45,8 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     std::vector<std::uint8_t>& due_root = sc.due_root;
     due_root.assign(bodies_.size(), 0);
     bool any_due = false;
-    // Why an island is due (statistics only): bit 1 its tick came, bit 2 a contact appeared in it.
+    // Why an island is due (the statistics count it): its tick came, a contact appeared in it.
+    constexpr std::uint8_t kTickCame = 1, kNewContact = 2;
     auto markDue = [&](int body, std::uint8_t why) {
         const int root = islands_.islandOf(body);
         if (root >= 0) {
@@ -57,12 +58,12 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
         for (int body : {ps.a, ps.b})
             if (!infinite_mass_[static_cast<std::size_t>(body)] && tick_end_[static_cast<std::size_t>(body)] <= t)
-                markDue(body, 1);
+                markDue(body, kTickCame);
     }
     for (const PairSample& s : samples) {
         if (s.manifolds.empty()) continue;
-        markDue(pairs_[static_cast<std::size_t>(s.pair)].a, 2);
-        markDue(pairs_[static_cast<std::size_t>(s.pair)].b, 2);
+        markDue(pairs_[static_cast<std::size_t>(s.pair)].a, kNewContact);
+        markDue(pairs_[static_cast<std::size_t>(s.pair)].b, kNewContact);
     }
     auto islandOfPair = [&](int p) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
@@ -91,10 +92,9 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // resting islands share their solve times: a settled bin of 100 separate islands is one internal
     // step per sub-step, not one per island.
     const double h = gridTick(t);
-    // On the grid: within rounding of a sub-step point (statistics only).
-    const double sub_step = frame_dt_ / static_cast<double>(settings_.contact_substeps);
-    const double phase = (t - frame_end_) / sub_step;
-    const bool on_grid = std::abs(phase - std::round(phase)) <= 1e-6;
+    // A solve on the grid runs exactly one sub-step to the next grid point (statistics only).
+    const bool on_grid =
+        std::abs(h - frame_dt_ / static_cast<double>(settings_.contact_substeps)) <= 1e-6 * frame_dt_;
     std::vector<ContactManifold>& manifolds = sc.manifolds;
     std::vector<std::pair<int, int>>& cache_of = sc.cache_of;  // (pair, part pair) per manifold
     manifolds.clear();
@@ -230,7 +230,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         }
         ++stats_.step_solves;
         stats_.solved_island_bodies += static_cast<std::int64_t>(is->bodies.size());
-        if ((due_root[static_cast<std::size_t>(is->root)] & 1) == 0)
+        if ((due_root[static_cast<std::size_t>(is->root)] & kTickCame) == 0)
             ++stats_.solves_new_contact;
         else if (on_grid)
             ++stats_.solves_on_grid;
