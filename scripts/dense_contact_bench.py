@@ -10,6 +10,7 @@ speed-accuracy ladder; every native configuration runs on one core, like the ref
     native-it4     ... native.threads=1 native.contact_iterations=4        (4 contact sweeps, default 10)
     native-shock0  ... native.threads=1 native.shock_iterations=0          (no shock propagation)
     native-spec    ... native.threads=1 native.touching=speculative        (issue 22's experimental regime)
+    native-soft    ... native.threads=1 native.touching=soft               (the same with Box2D v3's soft step)
     bullet         vroc run ... --backend bullet --set bullet.substeps=1  (Bullet at its own default)
     bullet2        ... bullet.substeps=2
     bullet4        ... bullet.substeps=4                                   (the project's 4 sub-steps)
@@ -93,6 +94,7 @@ CONFIGS = {
     # Issue 22's experimental regime (docs/native-dynamics.md, "Two regimes"), beside the default.
     "native-spec": ("native", ["native.threads=1", "native.touching=speculative"],
                     "native (threads=1, touching=speculative)"),
+    "native-soft": ("native", ["native.threads=1", "native.touching=soft"], "native (threads=1, touching=soft)"),
     "bullet": ("bullet", ["bullet.substeps=1"], "bullet (substeps=1)"),
     "bullet2": ("bullet", ["bullet.substeps=2"], "bullet (substeps=2)"),
     "bullet4": ("bullet", ["bullet.substeps=4"], "bullet (substeps=4)"),

@@ -28,13 +28,28 @@ void NativeBackend::syncBody(int body, double t) {
         const Vec3& a = drift_acceleration_[i];
         rb.com += rb.velocity * tau + (0.5 * tau * tau) * a;
         rb.velocity += a * tau;
-        // The torque's impulse half before and half after the rotation (symmetric in time).
-        rb.angular_momentum += (0.5 * tau) * drift_torque_[i];
-        rb.refreshEnergy();
-        advanceTorqueFree(rb, tau);
-        rb.angular_momentum += (0.5 * tau) * drift_torque_[i];
-        rb.refreshEnergy();
+        SubSteppedDrift& sub = sub_stepped_[i];
+        if (sub.active) {
+            // About a fixed axis: pieces of the turn compose to the whole, whatever the times.
+            const double angle = sub.angular_velocity.norm() * tau;
+            if (angle > 0.0)
+                rb.orientation =
+                    (Quat(Eigen::AngleAxisd(angle, sub.angular_velocity.normalized())) * rb.orientation).normalized();
+            rb.setAngularVelocity(sub.angular_velocity);
+        } else {
+            // The torque's impulse half before and half after the rotation (symmetric in time).
+            rb.angular_momentum += (0.5 * tau) * drift_torque_[i];
+            rb.refreshEnergy();
+            advanceTorqueFree(rb, tau);
+            rb.angular_momentum += (0.5 * tau) * drift_torque_[i];
+            rb.refreshEnergy();
+        }
         from += tau;
+        if (sub.active && !(from < drift_until_[i])) {
+            sub.active = false;
+            rb.velocity = sub.end_velocity;
+            rb.setAngularVelocity(sub.end_angular_velocity);
+        }
     }
     if (t > from) {
         advanceBallistic(rb, t - from, scene_.gravity);
@@ -101,8 +116,9 @@ Aabb NativeBackend::sweptBox(int body) const {
     if (rest > 0.0) {
         const Vec3 c = rb.com + rb.velocity * tau + (0.5 * tau * tau) * drift_acceleration_[i];
         MotionBound after = ballisticBound(body);
-        after.velocity = rb.velocity + drift_acceleration_[i] * tau;
-        after.angular_speed = m.angular_speed;
+        const SubSteppedDrift& sub = sub_stepped_[i];
+        after.velocity = sub.active ? sub.end_velocity : Vec3(rb.velocity + drift_acceleration_[i] * tau);
+        after.angular_speed = sub.active ? std::max(m.angular_speed, sub.end_angular_velocity.norm()) : m.angular_speed;
         const Aabb later = after.sweptAabb({c - Vec3::Constant(r), c + Vec3::Constant(r)}, rest);
         box.lower = box.lower.cwiseMin(later.lower);
         box.upper = box.upper.cwiseMax(later.upper);
@@ -117,8 +133,22 @@ void NativeBackend::startDrift(int body, const BodyImpulse& imp, double t, doubl
     const RigidBody saved = rb;
     // Split-impulse position correction: applied to the pose, never to the velocities.
     rb.com += imp.displacement;
-    drift_acceleration_[i] = scene_.gravity + (rb.inv_mass / h) * imp.linear;
-    drift_torque_[i] = imp.angular / h;
+    SubSteppedDrift& sub = sub_stepped_[i];
+    sub.active = imp.sub_stepped;
+    if (imp.sub_stepped) {
+        // A straight path and a turn about a fixed axis at the sub-steps' mean velocities, then
+        // their end velocities.
+        rb.velocity = imp.mean_velocity;
+        rb.setAngularVelocity(imp.mean_angular_velocity);
+        drift_acceleration_[i] = Vec3::Zero();
+        drift_torque_[i] = Vec3::Zero();
+        sub.angular_velocity = imp.mean_angular_velocity;
+        sub.end_velocity = imp.end_velocity;
+        sub.end_angular_velocity = imp.end_angular_velocity;
+    } else {
+        drift_acceleration_[i] = scene_.gravity + (rb.inv_mass / h) * imp.linear;
+        drift_torque_[i] = imp.angular / h;
+    }
     valid_at_[i] = t;
     drift_until_[i] = t + h;
     held_[i] = 1;

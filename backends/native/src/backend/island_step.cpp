@@ -8,6 +8,7 @@
 #include "backend/native_backend.h"
 #include "dynamics/newton_coulomb.h"
 #include "dynamics/patch_impulse.h"
+#include "dynamics/soft_step.h"
 #include "dynamics/vroc1995_impulse.h"
 
 namespace vroc::native {
@@ -170,10 +171,20 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     solver.correction_target = 0.25 * cd;
     // Speculative points (beyond the window) may close to half the collision distance: where the
     // scenes place resting bodies, inside the window, so they are held from then on.
-    if (settings_.touching == TouchingRegime::Speculative) {
+    if (onGrid(settings_.touching)) {
         solver.speculative_from = cd;
         solver.speculative_target = 0.5 * cd;
     }
+    SoftStepSettings soft;
+    soft.substeps = settings_.soft_substeps;
+    soft.relax_iterations = settings_.soft_relax;
+    soft.iterations = settings_.soft_iterations;
+    soft.contact_hertz = settings_.soft_hertz;
+    soft.damping_ratio = settings_.soft_damping;
+    soft.target = 0.25 * cd;
+    soft.speculative_from = cd;
+    soft.correction_floor = solver.correction_floor;
+    soft.warm_start = settings_.warm_start;
     const double resting_speed = scene_.gravity.norm() * h;
     auto solveOne = [&](IslandSolve& is, const ContactSolverSettings& settings) {
         is.local.reserve(is.bodies.size());
@@ -189,7 +200,9 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             is.resting.push_back(resting[static_cast<std::size_t>(m)]);
         }
         collisionPhase(is.local, is.solved, is.resting, resting_speed, h, is.collision);
-        is.report = solveContactPhase(is.local, is.solved, h, scene_.gravity, settings, is.impulses);
+        is.report = settings_.touching == TouchingRegime::Soft
+                        ? solveSoftStep(is.local, is.solved, h, scene_.gravity, soft, is.impulses)
+                        : solveContactPhase(is.local, is.solved, h, scene_.gravity, settings, is.impulses);
     };
     // A large island is solved alone, its sweeps shared by all workers (colour groups, see
     // solveContactPhase); the other islands are shared out, one per worker. Same bits either way.

@@ -34,6 +34,7 @@ NativeBackend::NativeBackend(const Scene& scene, const NativeSettings& settings)
     drift_until_.assign(n, 0.0);
     drift_acceleration_.assign(n, Vec3::Zero());
     drift_torque_.assign(n, Vec3::Zero());
+    sub_stepped_.assign(n, SubSteppedDrift{});
     held_.assign(n, 0);
     tick_end_.assign(n, 0.0);
     box_dirty_.assign(n, 1);

@@ -88,6 +88,7 @@ private:
         int queries = 0, walk_steps = 0, max_walk = 0, not_converged = 0;
         bool deferred = false;   ///< approaching impact moved to its refined touching time (deferImpacts)
         double contact_time = 0.0;   ///< [s] deferred: when it is resolved (the refined touching time)
+        double reach = 0.0;          ///< [m] the patch reach the manifolds were built with (patchReach)
     };
 
     // --- the step (native_backend.cpp) ---
@@ -101,8 +102,12 @@ private:
     void updateBroadPhase(bool all, std::vector<int>& entered);
     PairState& pairState(int a, int b);
     /// [m] how far from the support plane a feature still belongs to a pair's contact patch: the
-    /// collision distance, plus in the speculative regime what the pair may close within a tick.
+    /// collision distance, plus in the speculative and soft regimes what the pair may close within
+    /// the longest tick (capped).
     double patchReach(const PairState& ps) const;
+    /// [m/s] bound on how fast any feature of the pair closes now: relative COM speed, each body's
+    /// rotation at its outer radius, gravity over `tick` [s] against a body of infinite mass.
+    double closingSpeed(const PairState& ps, double tick) const;
     /// True if `body` is held by its island's last solve at time t (drifting up to t) or is ground:
     /// a pair of two such bodies is in the speculative regime, a pair with a body in flight in the
     /// exact one.
@@ -202,6 +207,7 @@ private:
     void endDrift(int body) {
         drift_until_[static_cast<std::size_t>(body)] = valid_at_[static_cast<std::size_t>(body)];
         held_[static_cast<std::size_t>(body)] = 0;
+        sub_stepped_[static_cast<std::size_t>(body)].active = false;
         bumpVersion(body);
     }
     void bumpVersion(int body) {
@@ -228,6 +234,16 @@ private:
     std::vector<Vec3> drift_acceleration_;  // [m/s^2] per body: constant COM acceleration of the drift
     std::vector<Vec3> drift_torque_;        // [N m] per body: constant torque of the drift (world)
     std::vector<std::uint8_t> held_;        // per body: its drift is its island's last solve (endDrift clears)
+    // Per body, a sub-stepped drift (BodyImpulse::sub_stepped): it turns at a constant world
+    // angular velocity (about a fixed axis, so that it ends at its sub-steps' orientation), and ends
+    // at their velocities.
+    struct SubSteppedDrift {
+        bool active = false;
+        Vec3 angular_velocity = Vec3::Zero();      // [rad/s] world, over the drift
+        Vec3 end_velocity = Vec3::Zero();          // [m/s] at the drift's end
+        Vec3 end_angular_velocity = Vec3::Zero();  // [rad/s] world, at the drift's end
+    };
+    std::vector<SubSteppedDrift> sub_stepped_;
     std::vector<double> tick_end_;          // [s] per body: when its island is solved again (setTick)
     double next_tick_ = 0.0;                // [s] cached minimum of tick_end_ over touching bodies
     bool ticks_dirty_ = true;

@@ -26,10 +26,52 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "relative velocity by more than this (0: always run every sweep)"});
     s.push_back({"native.contact_substeps", T::Integer, "1", 1, 1000, {},
                  "island ticks per frame: the contact phase's step is frame_dt / this"});
-    s.push_back({"native.touching", T::Choice, "protected", 0, 0, {"protected", "speculative"},
+    s.push_back({"native.touching",
+                 T::Choice,
+                 "protected",
+                 0,
+                 0,
+                 {"protected", "speculative", "soft"},
                  "touching islands: solved again whenever a feature could close past the window (motion "
                  "bounds), or (experimental) held pairs solved on the sub-step grid only, with speculative "
-                 "points for what may close within a tick (docs/native-dynamics.md, \"Two regimes\")"});
+                 "points for what may close within a tick; soft: that, with Box2D v3's sub-stepped soft "
+                 "contact solve in each tick (docs/native-dynamics.md, \"Two regimes\", \"The soft regime\")"});
+    s.push_back({"native.soft_substeps",
+                 T::Integer,
+                 "4",
+                 1,
+                 64,
+                 {},
+                 "soft regime: sub-steps per island tick (separations updated from the bodies' motion)"});
+    s.push_back({"native.soft_hertz",
+                 T::Real,
+                 "60",
+                 0,
+                 1e4,
+                 {},
+                 "[Hz] soft regime: stiffness of the push-out of penetrating points (capped at a quarter "
+                 "of the sub-step rate; at most 3 m/s, as Box2D v3)"});
+    s.push_back({"native.soft_iterations",
+                 T::Integer,
+                 "4",
+                 1,
+                 100,
+                 {},
+                 "soft regime: relaxations with the push-out per sub-step, before its move"});
+    s.push_back({"native.soft_relax",
+                 T::Integer,
+                 "1",
+                 0,
+                 100,
+                 {},
+                 "soft regime: relaxations without bias after each sub-step's move"});
+    s.push_back({"native.soft_damping",
+                 T::Real,
+                 "1",
+                 0,
+                 100,
+                 {},
+                 "soft regime: damping ratio of the push-out spring (Box2D v3: 10; lower pushes out faster)"});
     s.push_back({"native.warm_start", T::Boolean, "true", 0, 0, {},
                  "start each contact solve from the pair's previous impulses (persistent manifolds)"});
     s.push_back({"native.sleeping", T::Boolean, "false", 0, 0, {},
@@ -64,7 +106,13 @@ NativeSettings NativeSettings::from(const Settings& settings) {
         n.contact_substeps = static_cast<int>(settings.integer("native.contact_substeps"));
     if (has("native.touching"))
         n.touching = settings.text("native.touching") == "speculative" ? TouchingRegime::Speculative
-                                                                      : TouchingRegime::Protected;
+                     : settings.text("native.touching") == "soft"      ? TouchingRegime::Soft
+                                                                       : TouchingRegime::Protected;
+    if (has("native.soft_substeps")) n.soft_substeps = static_cast<int>(settings.integer("native.soft_substeps"));
+    if (has("native.soft_hertz")) n.soft_hertz = settings.real("native.soft_hertz");
+    if (has("native.soft_iterations")) n.soft_iterations = static_cast<int>(settings.integer("native.soft_iterations"));
+    if (has("native.soft_relax")) n.soft_relax = static_cast<int>(settings.integer("native.soft_relax"));
+    if (has("native.soft_damping")) n.soft_damping = settings.real("native.soft_damping");
     if (has("native.warm_start")) n.warm_start = settings.boolean("native.warm_start");
     if (has("native.sleeping")) n.sleeping = settings.boolean("native.sleeping");
     if (has("native.sleep_speed")) n.sleep_speed = settings.real("native.sleep_speed");

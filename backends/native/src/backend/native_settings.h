@@ -17,7 +17,13 @@ enum class TouchingRegime {
     /// Event-driven protection: the island is solved again whenever a feature could close past the
     /// window (motion bounds), the schedule of issue 9.
     Protected,
+    /// Fixed step with Box2D v3's soft step inside each tick (sub-steps, soft push-out, relax):
+    /// held pairs are solved on the grid only, with no protection tick for what is in reach.
+    Soft,
 };
+
+/// Held islands are solved on the grid with speculative points (the speculative and soft regimes).
+inline bool onGrid(TouchingRegime r) { return r != TouchingRegime::Protected; }
 
 struct NativeSettings {
     ResponseModel response = ResponseModel::NewtonCoulomb;
@@ -31,6 +37,11 @@ struct NativeSettings {
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
     TouchingRegime touching = TouchingRegime::Protected;   ///< how touching islands are scheduled (speculative: experimental)
     bool warm_start = true;                 ///< contact phase starts from the previous impulses
+    int soft_substeps = 4;                  ///< soft regime: sub-steps per island tick
+    double soft_hertz = 60.0;               ///< [Hz] soft regime: stiffness of the push-out
+    int soft_iterations = 4;                ///< soft regime: relaxations with the push-out per sub-step
+    int soft_relax = 1;                     ///< soft regime: relaxations without bias per sub-step
+    double soft_damping = 1.0;              ///< soft regime: damping ratio of the push-out
     bool sleeping = false;                  ///< islands at rest stop being simulated until touched
     double sleep_speed = 0.01;              ///< [m/s] a body is still below it (COM and |w| x radius)
     double sleep_time = 0.5;                ///< [s] an island sleeps once every body was still this long

@@ -117,6 +117,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
                                                  scene_.materials[scene_.bodies[ps.b].material]);
     const double cd = scene_.collision_distance;
     const double reach = patchReach(ps);
+    out.reach = reach;
     // The storage of the pair's previous sample (recycleSamples), emptied: no allocation once warm.
     out.manifolds = std::move(ps.spare_manifolds);
     out.manifold_part = std::move(ps.spare_manifold_part);
@@ -164,25 +165,31 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
     return out;
 }
 
-double NativeBackend::patchReach(const PairState& ps) const {
-    const double cd = scene_.collision_distance;
-    if (settings_.touching != TouchingRegime::Speculative) return cd;
-    // What the pair can close over the longest tick (1.5 sub-steps, after an off-grid solve): the
-    // relative COM speed, each body's rotation at its outer radius, gravity against a body of
-    // infinite mass. Capped at a quarter of the smaller body's inner radius: a feature farther than
-    // that is not part of this contact, and a wide tolerance would let in faces of a rounded hull.
+double NativeBackend::closingSpeed(const PairState& ps, double tick) const {
     const RigidBody& a = bodies_[static_cast<std::size_t>(ps.a)];
     const RigidBody& b = bodies_[static_cast<std::size_t>(ps.b)];
-    const BodyShape& sa = shapes_[static_cast<std::size_t>(ps.a)];
-    const BodyShape& sb = shapes_[static_cast<std::size_t>(ps.b)];
-    const double tick = kLongestTick * frame_dt_ / static_cast<double>(settings_.contact_substeps);
     const bool one_ground = infinite_mass_[static_cast<std::size_t>(ps.a)] != infinite_mass_[static_cast<std::size_t>(ps.b)];
-    const double speed = (b.velocity - a.velocity).norm() + a.maxAngularSpeed() * sa.outer_radius +
-                         b.maxAngularSpeed() * sb.outer_radius + (one_ground ? scene_.gravity.norm() * tick : 0.0);
+    return (b.velocity - a.velocity).norm() +
+           a.maxAngularSpeed() * shapes_[static_cast<std::size_t>(ps.a)].outer_radius +
+           b.maxAngularSpeed() * shapes_[static_cast<std::size_t>(ps.b)].outer_radius +
+           (one_ground ? scene_.gravity.norm() * tick : 0.0);
+}
+
+double NativeBackend::patchReach(const PairState& ps) const {
+    const double cd = scene_.collision_distance;
+    if (!onGrid(settings_.touching)) return cd;
+    // What the pair can close over the longest tick (1.5 sub-steps, after an off-grid solve).
+    // Capped at a quarter of the smaller body's inner radius: a feature farther than that is not
+    // part of this contact, a wide tolerance would let in faces of a rounded hull, and the patch
+    // (the reference and incident faces, contact_patch.h) holds only the features of one face: a
+    // body turning farther brings down corners of another.
+    const double tick = kLongestTick * frame_dt_ / static_cast<double>(settings_.contact_substeps);
     double size = kNever;
-    if (!infinite_mass_[static_cast<std::size_t>(ps.a)]) size = std::min(size, sa.inner_radius);
-    if (!infinite_mass_[static_cast<std::size_t>(ps.b)]) size = std::min(size, sb.inner_radius);
-    const double reach = std::min(speed * tick, kSpeculativeReach * size);
+    if (!infinite_mass_[static_cast<std::size_t>(ps.a)])
+        size = std::min(size, shapes_[static_cast<std::size_t>(ps.a)].inner_radius);
+    if (!infinite_mass_[static_cast<std::size_t>(ps.b)])
+        size = std::min(size, shapes_[static_cast<std::size_t>(ps.b)].inner_radius);
+    const double reach = std::min(closingSpeed(ps, tick) * tick, kSpeculativeReach * size);
     return cd + (std::isfinite(reach) && reach > 0.0 ? reach : 0.0);
 }
 
@@ -371,10 +378,29 @@ void NativeBackend::scheduleSampled(const PairSample& s, double t, bool solved) 
     double bound = std::max(0.0, horizon);
     // Speculative regime: a part pair the solve held (both bodies drifting) waits for its island's
     // grid tick; what may close within the tick was in the solve as speculative points.
+    // Soft regime: every part pair the solve held within the pair's reach waits for the grid (it
+    // was in the solve as speculative points, and the sub-steps followed the bodies' turning); a
+    // part pair beyond the reach keeps a bound, and so does every part pair of a pair that may
+    // close farther than the capped reach within a tick (a fast body: the speculative points cannot
+    // stand for all it may meet). A pair that only now touches (not solved) was in no solve: it
+    // keeps its bounds, so its island is solved before it closes.
+    const bool soft = held && settings_.touching == TouchingRegime::Soft;
     const bool speculative = held && settings_.touching == TouchingRegime::Speculative;
+    bool covers_tick = false;
+    if (soft) {
+        // What the pair may close before its island's next tick, at its speeds after the solve,
+        // against what the manifolds reached when they were built.
+        double tick_end = kNever;
+        for (int body : {ps.a, ps.b})
+            if (!infinite_mass_[static_cast<std::size_t>(body)])
+                tick_end = std::min(tick_end, tick_end_[static_cast<std::size_t>(body)]);
+        const double tick = tick_end - t;
+        covers_tick = tick < kNever && closingSpeed(ps, tick) * tick <= s.reach - cd;
+    }
     for (std::size_t k = 0; k < s.parts.size(); ++k) {
         const PartGap& g = s.parts[k];
         if (speculative && g.distance < cd) continue;
+        if (covers_tick && g.distance < s.reach) continue;
         const double allowed =
             held ? g.distance - kSolvedFloor * cd
                  : (g.distance < cd ? std::max(g.distance - kTouchingFloor * cd, kTouchingMinAllowance * cd)

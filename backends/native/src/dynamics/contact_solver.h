@@ -59,6 +59,16 @@ struct BodyImpulse {
     bool supported = false;        ///< a contact impulse acted on the body this step
     Vec3 displacement = Vec3::Zero();   ///< [m] split-impulse position correction of the COM, world
                                         ///< (translation only: see positionPass)
+    /// The soft step's form (solveSoftStep): the body moves over the step at constant velocity and
+    /// angular velocity (its sub-steps' displacement and rotation over the step; `linear` and
+    /// `angular` unused) and ends the step at `end_velocity` and `end_angular_velocity`. Between two
+    /// states that do not penetrate, a straight path does not either (to first order in rotation);
+    /// a parabola through the same end points can.
+    bool sub_stepped = false;
+    Vec3 mean_velocity = Vec3::Zero();          ///< [m/s] displacement over the step / step
+    Vec3 mean_angular_velocity = Vec3::Zero();  ///< [rad/s] rotation vector over the step / step, world
+    Vec3 end_velocity = Vec3::Zero();           ///< [m/s]
+    Vec3 end_angular_velocity = Vec3::Zero();   ///< [rad/s] world
 };
 
 struct ContactSolverReport {

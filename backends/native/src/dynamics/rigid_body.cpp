@@ -11,6 +11,13 @@ Mat3 RigidBody::invInertiaWorld() const {
     return r * inv_inertia_body * r.transpose();
 }
 
+void RigidBody::setAngularVelocity(const Vec3& omega) {
+    if (infiniteMass()) return;
+    const Mat3 r = rotation();
+    angular_momentum = r * inertia_body * r.transpose() * omega;
+    refreshEnergy();
+}
+
 Vec3 RigidBody::angularVelocity() const {
     if (is_static) return Vec3::Zero();
     if (is_kinematic) return kinematic_angular_velocity;
@@ -78,9 +85,7 @@ void RigidBody::setFromState(const Pose& pose, const Vec3& linear_velocity, cons
         kinematic_angular_velocity = angular_velocity;
         return;
     }
-    const Mat3 r = rotation();
-    angular_momentum = r * inertia_body * r.transpose() * angular_velocity;
-    refreshEnergy();
+    setAngularVelocity(angular_velocity);
 }
 
 }  // namespace vroc::native

@@ -31,6 +31,9 @@ struct RigidBody {
     Mat3 rotation() const { return orientation.toRotationMatrix(); }
     /// [1/(kg m^2)] inverse inertia in world axes (zero for infinite mass).
     Mat3 invInertiaWorld() const;
+    /// Sets the angular momentum so that the body turns at `omega` [rad/s, world] (L = I_world omega)
+    /// and re-derives the energy reference.
+    void setAngularVelocity(const Vec3& omega);
     /// [rad/s] world angular velocity, I_world^-1 L.
     Vec3 angularVelocity() const;
     /// [m/s] world velocity of the material point at world position `p`.
