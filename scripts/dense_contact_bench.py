@@ -9,6 +9,7 @@ speed-accuracy ladder; every native configuration runs on one core, like the ref
     native-sub4    ... native.threads=1 native.contact_substeps=4          (4 island ticks per frame)
     native-it4     ... native.threads=1 native.contact_iterations=4        (4 contact sweeps, default 10)
     native-shock0  ... native.threads=1 native.shock_iterations=0          (no shock propagation)
+    native-shock8  ... native.threads=1 native.shock_per_level=false       (8 shock sweeps a level, however tall)
     native-spec    ... native.threads=1 native.touching=speculative        (issue 22's experimental regime)
     native-soft    ... native.threads=1 native.touching=soft               (the same with Box2D v3's soft step)
     bullet         vroc run ... --backend bullet --set bullet.substeps=1  (Bullet at its own default)
@@ -91,6 +92,7 @@ CONFIGS = {
     "native-sub4": ("native", ["native.threads=1", "native.contact_substeps=4"], "native (contact_substeps=4)"),
     "native-it4": ("native", ["native.threads=1", "native.contact_iterations=4"], "native (contact_iterations=4)"),
     "native-shock0": ("native", ["native.threads=1", "native.shock_iterations=0"], "native (shock_iterations=0)"),
+    "native-shock8": ("native", ["native.threads=1", "native.shock_per_level=false"], "native (shock_per_level=false)"),
     # Issue 22's experimental regime (docs/native-dynamics.md, "Two regimes"), beside the default.
     "native-spec": ("native", ["native.threads=1", "native.touching=speculative"],
                     "native (threads=1, touching=speculative)"),

@@ -795,13 +795,16 @@ def all_scenes():
     for n in (100, 400, 1000, 4000):
         out[f"scaling_boxes{n}"] = lambda n=n: scaling(n)
     out.update(NEW_KINDS)
+    # Tall standing pyramids between pyramid30 and pyramid100 (the shock sweeps' growth with height).
+    for base in (45, 60):
+        out[f"pyramid{base}"] = lambda base=base: standing_pyramid(f"pyramid{base}", base)
     return out
 
 
 # Written only when named: every test that walks scenes/ steps each shipped scene on every backend,
 # and the native backend does not yet step 5,050 touching cubes at a usable speed (issue 22, open:
-# more than 3 min and 3.5 GB for the first frames). `generate_stress.py pyramid100` writes it.
-ON_DEMAND = {"pyramid100"}
+# 1.3 s per frame). `generate_stress.py pyramid100` writes it; pyramid45 and pyramid60 likewise.
+ON_DEMAND = {"pyramid100", "pyramid45", "pyramid60"}
 
 
 def main(argv):

@@ -162,6 +162,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     solver.model = settings_.response;
     solver.iterations = settings_.contact_iterations;
     solver.shock_iterations = settings_.shock_iterations;
+    solver.shock_per_level = settings_.shock_per_level;
     solver.warm_start = settings_.warm_start;
     solver.tolerance = settings_.solver_tolerance;
     // Penetration (deeper than rounding: a patch placed exactly touching is left alone) is pushed

@@ -21,6 +21,14 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "contact-phase Gauss-Seidel sweeps over the contact points"});
     s.push_back({"native.shock_iterations", T::Integer, "8", 0, 1000, {},
                  "shock-propagation sweeps per stack level (0 turns it off)"});
+    s.push_back({"native.shock_per_level",
+                 T::Boolean,
+                 "true",
+                 0,
+                 0,
+                 {},
+                 "shock propagation runs at least as many sweeps a level as the island has levels (a tall "
+                 "pile's per-level residuals add up at its top); false: native.shock_iterations exactly"});
     s.push_back({"native.solver_tolerance", T::Real, "0", 0, 1, {},
                  "[m/s] contact and shock sweeps stop early once a whole sweep changes no contact's "
                  "relative velocity by more than this (0: always run every sweep)"});
@@ -101,6 +109,7 @@ NativeSettings NativeSettings::from(const Settings& settings) {
         n.contact_iterations = static_cast<int>(settings.integer("native.contact_iterations"));
     if (has("native.shock_iterations"))
         n.shock_iterations = static_cast<int>(settings.integer("native.shock_iterations"));
+    if (has("native.shock_per_level")) n.shock_per_level = settings.boolean("native.shock_per_level");
     if (has("native.solver_tolerance")) n.solver_tolerance = settings.real("native.solver_tolerance");
     if (has("native.contact_substeps"))
         n.contact_substeps = static_cast<int>(settings.integer("native.contact_substeps"));

@@ -33,6 +33,7 @@ struct NativeSettings {
     int collision_iterations = 5;           ///< collision-phase sweeps over touching pairs
     int contact_iterations = 10;            ///< contact-phase Gauss-Seidel sweeps
     int shock_iterations = 8;               ///< shock-propagation sweeps per level (0 = off)
+    bool shock_per_level = true;            ///< at least as many shock sweeps a level as the island has levels
     double solver_tolerance = 0.0;          ///< [m/s] contact sweeps stop once a sweep changes no velocity more
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
     TouchingRegime touching = TouchingRegime::Protected;   ///< how touching islands are scheduled (speculative: experimental)

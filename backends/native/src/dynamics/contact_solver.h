@@ -29,6 +29,9 @@ struct ContactSolverSettings {
     int iterations = 10;          ///< Gauss-Seidel sweeps over all contact points
     int cold_factor = 24;         ///< sweeps x this for a large island whose manifolds are mostly cold
     int shock_iterations = 8;     ///< sweeps per level during shock propagation (0 = off)
+    /// Shock sweeps per level: at least the island's number of levels (a tall pile's per-level
+    /// residuals add up at its top).
+    bool shock_per_level = true;
     /// [m/s] sweeps (and each level's shock sweeps) stop early once no relaxation in a whole sweep
     /// changed a contact's relative velocity by more than this; 0 runs every sweep.
     double tolerance = 0.0;
