@@ -2,9 +2,10 @@
 // The contact phase of the soft regime (native.touching=soft): Box2D v3's soft step (Catto,
 // "Solver2D", 2024) on one island's tick. Contact constraints are prepared once per tick (anchors,
 // effective masses, the separation of each point); the tick is then cut into sub-steps, each of
-// which integrates gravity, warm starts, relaxes the contacts with a soft bias (a spring of
-// `contact_hertz`, damping ratio `damping_ratio`; push-out capped at `max_push_speed`), moves the
-// bodies and relaxes again without bias. A point's separation is updated in every sub-step from the
+// which integrates gravity, warm starts, relaxes the contacts (rigid rows; a penetrating point is
+// pushed out at the bias rate of Box2D's soft constraint, a spring of `contact_hertz` with damping
+// ratio `damping_ratio`, capped at `max_push_speed`), moves the bodies and relaxes again without the
+// push-out, from the top of the pile down. A point's separation is updated in every sub-step from the
 // bodies' own motion (their displacement and rotation since the tick began): no new query. A
 // point that is apart may close to `target` within the sub-step and no further (a speculative
 // contact), so a tumbling vertex that is in the manifold is met when it arrives, without a solve of
@@ -36,9 +37,9 @@ struct SoftStepSettings {
 };
 
 /// Solves the contact phase of a tick of `h` [s] on the island's `bodies` (read, not changed).
-/// Per body, `impulses` receives how it moves over the tick, in the form the drift takes: a start
-/// impulse (start_linear, start_angular) then constant force and torque (linear, angular over h),
-/// chosen so that the drift ends the tick at the sub-steps' end velocity and displacement. Each
+/// Per body with a contact point, `impulses` receives how it moves over the tick, in the form the
+/// drift takes (BodyImpulse::sub_stepped): its sub-steps' mean velocity and angular velocity (the
+/// displacement and rotation vector over the tick, / h) and their end velocities. Each
 /// manifold gets its contact_impulse (summed over the tick) and its accumulated impulses for the
 /// next warm start (per tick, as the persistent manifolds store them).
 ContactSolverReport solveSoftStep(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
