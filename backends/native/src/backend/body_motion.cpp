@@ -12,6 +12,7 @@
 #include "backend/native_backend.h"
 #include "dynamics/free_flight.h"
 #include "scheduling/collision_time_bound.h"
+#include "vroc/core/rotation_vector.h"
 
 namespace vroc::native {
 
@@ -31,10 +32,7 @@ void NativeBackend::syncBody(int body, double t) {
         SubSteppedDrift& sub = sub_stepped_[i];
         if (sub.active) {
             // About a fixed axis: pieces of the turn compose to the whole, whatever the times.
-            const double angle = sub.angular_velocity.norm() * tau;
-            if (angle > 0.0)
-                rb.orientation =
-                    (Quat(Eigen::AngleAxisd(angle, sub.angular_velocity.normalized())) * rb.orientation).normalized();
+            rb.orientation = (quatFromRotationVector(tau * sub.angular_velocity) * rb.orientation).normalized();
             rb.setAngularVelocity(sub.angular_velocity);
         } else {
             // The torque's impulse half before and half after the rotation (symmetric in time).

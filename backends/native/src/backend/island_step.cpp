@@ -182,8 +182,8 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     soft.iterations = settings_.soft_iterations;
     soft.contact_hertz = settings_.soft_hertz;
     soft.damping_ratio = settings_.soft_damping;
-    soft.target = 0.25 * cd;
-    soft.speculative_from = cd;
+    soft.target = solver.correction_target;
+    soft.speculative_from = solver.speculative_from;
     soft.correction_floor = solver.correction_floor;
     soft.warm_start = settings_.warm_start;
     const double resting_speed = scene_.gravity.norm() * h;

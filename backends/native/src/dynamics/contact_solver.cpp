@@ -776,9 +776,9 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         // Per level, at least as many shock sweeps as the island has levels: each level's residual
         // moves every level above it, so a pile's top drifts by their sum (a base-45 pyramid with 8
         // sweeps a level launched its top at 0.07 m/s in the first frame; with 30, at 3e-5 m/s).
-        int height = 0;
-        for (const WorkBody& b : wb)
-            if (b.level < kUnreached) height = std::max(height, b.level);
+        int height = 0;  // the highest level reached (a patch's level is its upper body's)
+        for (const SweepSchedule::Group& g : plan.groups)
+            if (g.level < kUnreached) height = std::max(height, g.level);
         const int shock = settings.shock_iterations > 0 && settings.shock_per_level
                               ? std::max(settings.shock_iterations, height)
                               : settings.shock_iterations;

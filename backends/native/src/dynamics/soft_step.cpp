@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
+
+#include "vroc/core/rotation_vector.h"
 
 namespace vroc::native {
 namespace {
@@ -115,15 +118,6 @@ void warmStart(std::vector<SoftBody>& bodies, const SoftPoint& p) {
     applyAlong(a, b, p.n, p.ia_n, p.ib_n, p.normal);
     applyAlong(a, b, p.t1, p.ia_t1, p.ib_t1, p.tangent1);
     applyAlong(a, b, p.t2, p.ia_t2, p.ib_t2, p.tangent2);
-}
-
-/// Rotation vector of a unit quaternion (angle x axis).
-Vec3 rotationVector(const Quat& q) {
-    const Vec3 xyz = q.vec();
-    const double s = xyz.norm();
-    if (!(s > 1e-300)) return Vec3::Zero();
-    const double angle = 2.0 * std::atan2(s, std::abs(q.w()));
-    return (q.w() < 0.0 ? -angle : angle) / s * xyz;
 }
 
 }  // namespace
@@ -240,8 +234,10 @@ ContactSolverReport solveSoftStep(const std::vector<RigidBody>& bodies, std::vec
         }
         for (SoftPoint& p : points)
             p.level = std::max(level[static_cast<std::size_t>(p.a)], level[static_cast<std::size_t>(p.b)]);
-        std::stable_sort(points.begin(), points.end(),
-                         [](const SoftPoint& x, const SoftPoint& y) { return x.level < y.level; });
+        // (Ties in manifold and point order: a total order, so std::sort needs no buffer.)
+        std::sort(points.begin(), points.end(), [](const SoftPoint& x, const SoftPoint& y) {
+            return std::tie(x.level, x.manifold, x.index) < std::tie(y.level, y.manifold, y.index);
+        });
     }
 
     const double hertz = std::min(settings.contact_hertz, 0.25 * inv_hs);
@@ -293,7 +289,7 @@ ContactSolverReport solveSoftStep(const std::vector<RigidBody>& bodies, std::vec
         out.supported = true;
         out.sub_stepped = true;
         out.mean_velocity = inv_h * s.dp;
-        out.mean_angular_velocity = inv_h * rotationVector(s.dq);
+        out.mean_angular_velocity = inv_h * rotationVectorFromQuat(s.dq);
         out.end_velocity = s.v;
         out.end_angular_velocity = s.w;
     }
