@@ -4,7 +4,8 @@ JOBS ?= $(shell nproc)
 PACKAGES := cmake ninja-build g++ make pkg-config git ca-certificates \
   libeigen3-dev libbullet-dev libode-dev libmujoco-dev libccd-dev libassimp-dev libqhull-dev \
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libfmt-dev libopenmpi-dev openmpi-bin \
-  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium libsndfile1-dev libspnav-dev libx11-dev ccache
+  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium libsndfile1-dev libspnav-dev libx11-dev ccache \
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps configure build demo test test-long test-sanitize bench bench-dense bench-scale clean
@@ -50,7 +51,9 @@ test: build
 # The default suite built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own build
 # directory (nothing shared with $(BUILD_DIR) that could hide a finding); any finding fails.
 # -O1 with line tables only (cheaper to build than -O2 -g; reports still name file:line).
-# Benchmarks are not built (no test runs them).
+# Benchmarks are not built (no test runs them), nor the Python module (an instrumented extension
+# would need the sanitizer runtime preloaded into the interpreter; its C++ parts are the harness's
+# and the backends', sanitized here through their own tests).
 # Third-party leaks are suppressed in tests/sanitizers/lsan.supp, each with why. The two tests
 # that start `mpirun` are left out: Open MPI leaks inside MPI_Init from MCA components it has
 # already unloaded, which no suppression can name.
@@ -58,7 +61,7 @@ SANITIZE_DIR ?= build-sanitize
 test-sanitize: deps
 	@[ -f $(SANITIZE_DIR)/build.ninja ] || cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release \
 	  "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O1 -g1 -DNDEBUG" \
-	  -DVROC_SANITIZE=ON -DVROC_BUILD_BENCHMARKS=OFF $(CMAKE_FLAGS)
+	  -DVROC_SANITIZE=ON -DVROC_BUILD_BENCHMARKS=OFF -DVROC_PYTHON=OFF $(CMAKE_FLAGS)
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_init_order=1 \
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp:print_suppressions=0 \
@@ -83,7 +86,7 @@ fuzz: deps
 	fi
 	@[ -f $(FUZZ_DIR)/build.ninja ] || CC=clang-16 CXX=clang++-16 cmake -S . -B $(FUZZ_DIR) -G Ninja \
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVROC_FUZZ=ON -DVROC_BUILD_RENDERER=OFF -DVROC_BUILD_BENCHMARKS=OFF \
-	  -DVROC_WITH_MPI=OFF
+	  -DVROC_WITH_MPI=OFF -DVROC_PYTHON=OFF
 	cmake --build $(FUZZ_DIR) --target fuzz_all -j $(JOBS)
 	scripts/run_fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
 

@@ -144,6 +144,25 @@ run "$vroc" plugins --plugin "$work/downstream/vroc-plugin-hover.so"
 expect_in_output "hover  1.0.0  (ABI 2)" "vroc plugins --plugin vroc-plugin-hover.so"
 ok "C++-only downstream project: find_package(vroc) links vroc::core alone (no MPI), C++ SDK plugin loads"
 
+# 4a. The Python package, where `make install` puts it (lib/python3.X/dist-packages), imported from
+#     the moved prefix: it steps a scene and finds the prefix's plugins.
+python=$(sed -n 's/^VROC_PYTHON_EXECUTABLE:INTERNAL=//p' "$build/CMakeCache.txt")
+if [ -n "$python" ]; then
+  module=$(find "$p/lib" -path '*/dist-packages/vroc/_vroc*.so' | head -n 1)
+  [ -n "$module" ] || fail "the Python module was not installed under $p/lib/python3.X/dist-packages"
+  run env PYTHONPATH="$(dirname "$(dirname "$module")")" "$python" -c "
+import vroc
+assert vroc.__file__.startswith('$p/'), vroc.__file__
+sim = vroc.Simulation('$p/share/vroc/scenes/ball_drop.json', 'native')
+sim.run(1.0)
+names = [x['name'] for x in vroc.plugins() if x.get('rejected') is None]
+assert 'analytic' in names, names
+print('python ok', sim.state_hash, vroc.plugins()[0]['path'])"
+  expect_in_output "python ok" "import vroc from the prefix"
+  expect_in_output " $p/" "vroc.plugins() from the prefix"
+  ok "Python package: imported from the moved prefix, steps a scene, lists the prefix's plugins"
+fi
+
 # 4b. find_package(vroc COMPONENTS harness backend_native): the harness compares the downstream
 #     backend with native; MPI is found for C++ only; every installed header compiles.
 run "$cmake" -S "$source/tests/install/downstream_harness" -B "$work/downstream_harness" "${generator[@]}" \

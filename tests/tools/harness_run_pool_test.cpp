@@ -59,6 +59,25 @@ TEST(RunPool, ForkedWorkersGiveTheSameBitsInJobOrder) {
     EXPECT_EQ(forked.execution().runs, 10);
 }
 
+TEST(RunPool, WithoutARunsFolderForkedWorkersSendTheirResultsOverThePipes) {
+    const fs::path dir = test::freshTempDir("run-pool-pipes");
+    fs::create_directories(dir / "marks");
+    PoolOptions o;
+    o.jobs = 2;   // no runs_dir: nothing is written, yet the runs go to forked workers
+    const std::vector<Json> piped = RunPool(o).run(arithmeticJobs(8, dir / "marks"));
+    const std::vector<Json> here = RunPool::inProcess().run(arithmeticJobs(8));
+    ASSERT_EQ(piped.size(), 8u);
+    for (int i = 0; i < 8; ++i) {
+        EXPECT_EQ(piped[i].dump(), here[i].dump());
+        EXPECT_TRUE(std::signbit(piped[i]["negzero"].get<double>()));
+        EXPECT_TRUE(fs::exists(dir / "marks" / ("ran-" + std::to_string(i))));
+    }
+    // Only the marks: no run files, no status file anywhere in the folder.
+    int files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) files += e.is_regular_file();
+    EXPECT_EQ(files, 8);
+}
+
 TEST(RunPool, AFailedOrCrashedRunIsNamedAndTheOthersAreKept) {
     const fs::path dir = test::freshTempDir("run-pool-fail");
     for (int jobs : {1, 2}) {

@@ -12,7 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
-#include "register_backends.h"
+#include "vroc/registration/register_backends.h"
 #include "vroc/core/build_info.h"
 #include "vroc/core/errors.h"
 #include "vroc/harness/mpi_world.h"
@@ -76,7 +76,7 @@ std::string versionText() {
 }  // namespace
 
 static int runCommand(int argc, char** argv) {
-    vroc::cli::registerBackends();
+    vroc::registration::registerBackends();
     vroc::cli::Context context{joinCommandLine(argc, argv), ::isatty(STDERR_FILENO) == 1};
 
     CLI::App app{"VROC: collision detection and response between virtual objects and a static model "

@@ -25,11 +25,6 @@ struct PoolArgs {
 /// Declares --jobs/-j and --resume on `sub`.
 void addPoolOptions(CLI::App& sub, PoolArgs& args);
 
-/// The output folder of a pooled command, made ready on rank 0: created, and its earlier
-/// metrics.json and report removed so it does not look complete while runs are redone. --resume
-/// needs the folder of the interrupted command (--out). Throws InputError.
-void prepareRunsOutput(const std::filesystem::path& out, const PoolArgs& args, bool out_given);
-
 /// What a pooled command produced: its document on every rank; on rank 0 also the report it wrote.
 struct PooledResult {
     harness::Json doc;

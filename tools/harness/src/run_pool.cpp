@@ -257,7 +257,7 @@ public:
         const int ranks = mpi::size();
         int ranks_stopped = 0;
         if (ranks > 1 && o_.runs_dir.empty()) throw std::logic_error("RunPool: runs under MPI need a runs_dir");
-        const bool in_process = (local_slots_ <= 1 || o_.runs_dir.empty()) && ranks == 1;
+        const bool in_process = local_slots_ <= 1 && ranks == 1;
         while (outstanding() > 0 || (ranks > 1 && ranks_stopped < ranks - 1)) {
             bool progressed = false;
             if (in_process) {
@@ -387,6 +387,10 @@ private:
             if (nl != std::string::npos && on_dependency_)
                 for (const Json& d : Json::parse(command.substr(nl + 1))) on_dependency_(d[0].get<std::size_t>(), d[1]);
             auto [ok, text] = runHere(jobs_[static_cast<std::size_t>(i)]);
+            if (ok && o_.runs_dir.empty()) {   // nothing kept on disk: the result travels over the pipe
+                if (!writeFrame(out, "ok\n" + text)) return;
+                continue;
+            }
             if (ok) {
                 try {
                     writeRunFile(o_.runs_dir, jobs_[static_cast<std::size_t>(i)].id, plan_hash_, text);
@@ -425,7 +429,9 @@ private:
             if (!readFrame(w.from, answer)) { workerDied(w); any = true; continue; }
             const std::size_t i = *w.job;
             w.job.reset();
-            if (answer == "ok") {
+            if (answer.rfind("ok\n", 0) == 0) {   // no runs_dir: the result itself, normalised as a file's is
+                finish(i, true, Json::parse(std::string_view(answer).substr(3)).dump(), w.start, false);
+            } else if (answer == "ok") {
                 const std::optional<Json> r = readRunFile(o_.runs_dir / (jobs_[i].id + ".json"), jobs_[i].id, plan_hash_);
                 if (r) finish(i, true, r->dump(), w.start, false);
                 else finish(i, false, "the worker answered without writing its result", w.start, false);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <algorithm>
 
+#include "vroc/core/body_states.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/frame_loop.h"
 #include "vroc/harness/run_trace.h"
@@ -43,10 +44,7 @@ RunTrace runBackend(const BackendInfo& info, const Scene& scene, const Settings&
                     const RunOptions& options) {
     if (!(options.frame_dt > 0)) throw InputError("frame step must be positive");
     std::unique_ptr<Backend> backend = info.create(scene, settings);
-    if (options.initial_states) {
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-            if (!scene.bodies[i].isStatic()) backend->setBodyState(static_cast<int>(i), (*options.initial_states)[i]);
-    }
+    if (options.initial_states) setBodyStates(*backend, scene, *options.initial_states);
     RunTrace trace;
     trace.backend = info.name;
     trace.frame_dt = options.frame_dt;

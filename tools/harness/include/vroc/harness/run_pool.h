@@ -53,8 +53,9 @@ struct PoolProgress {
 
 struct PoolOptions {
     int jobs = 0;                          ///< local runs at once; 0: every core (one per rank under MPI)
-    std::filesystem::path runs_dir;        ///< where each finished run is written (created); empty: nowhere, and
-                                           ///< the runs go one after another in this process
+    std::filesystem::path runs_dir;        ///< where each finished run is written (created, one fsync'd file a run);
+                                           ///< empty: nowhere (no --resume), results come back over the workers'
+                                           ///< pipes; MPI ranks need it
     bool resume = false;                   ///< load finished runs of the same plan instead of rerunning them
     Json plan;                             ///< everything the runs depend on; hashed into each run file
     std::string command = "vroc";          ///< for messages, e.g. "vroc sweep"

@@ -38,7 +38,7 @@ struct RunOptions {
     double frame_dt = 0;        ///< [s] > 0
     std::int64_t frames = 0;    ///< frames to step (>= 0; frameCount for a duration)
     /// If set: every virtual body starts from these states (indexed like Scene::bodies), applied
-    /// through Backend::setBodyState on the fresh backend (re-anchoring, twin perturbation).
+    /// through setBodyStates (core/body_states.h) on the fresh backend (re-anchoring, twin perturbation).
     std::optional<std::vector<BodyState>> initial_states;
     bool record_states = true;  ///< false keeps only the first and last frames (cost runs)
     std::int64_t record_every = 1;   ///< keep frames f with f % record_every == 0 (and the last)
