@@ -14,6 +14,20 @@ scene order (real bodies included; `scene.virtual` masks the dynamic ones). Bad 
 ValueError with the same one-line message as the `vroc` program. See docs/python.md.
 """
 import os as _os
+import sys as _sys
+
+try:   # the extension's arrays are NumPy's: without it the extension cannot initialise
+    import numpy as _numpy  # noqa: F401
+except ImportError as _error:
+    raise ImportError("vroc needs NumPy in this interpreter (%s). The module is built for Debian's python3 "
+                      "(/usr/bin/python3) with python3-numpy: run that interpreter, or install NumPy here "
+                      "(docs/python.md)." % _sys.executable) from _error
+try:
+    from . import _vroc  # noqa: F401
+except ImportError as _error:
+    raise ImportError("vroc: the extension vroc/_vroc*.so was not built for this interpreter (%s, Python %d.%d); "
+                      "build with -DPython3_EXECUTABLE=%s (docs/python.md)"
+                      % (_sys.executable, _sys.version_info[0], _sys.version_info[1], _sys.executable)) from _error
 
 from ._vroc import (BUILD, EVENT_DTYPE, STATE_WIDTH, BackendInfo, Body, Material, Scene, SettingSpec,
                     Simulation, __version__, backend, backends)
