@@ -73,6 +73,16 @@ void step(World& w, std::mt19937_64& rng, double size, double jump_probability) 
     }
 }
 
+// added() and removed() against the brute-force sets before and after an update.
+void expectChanges(const SweepAndPrune& sap, const std::vector<BodyPair>& before, const std::vector<BodyPair>& after,
+                   int frame) {
+    std::vector<BodyPair> added, removed;
+    std::set_difference(after.begin(), after.end(), before.begin(), before.end(), std::back_inserter(added));
+    std::set_difference(before.begin(), before.end(), after.begin(), after.end(), std::back_inserter(removed));
+    ASSERT_EQ(sap.added(), added) << "frame " << frame << ": " << firstDifference(sap.added(), added);
+    ASSERT_EQ(sap.removed(), removed) << "frame " << frame << ": " << firstDifference(sap.removed(), removed);
+}
+
 TEST(SchedulingSweepAndPrune, MatchesBruteForceOverManyFrames) {
     for (double jump : {0.0, 0.02, 1.0}) {   // coherent, occasionally incoherent, fully random
         std::mt19937_64 rng(9);
@@ -80,6 +90,7 @@ TEST(SchedulingSweepAndPrune, MatchesBruteForceOverManyFrames) {
         World w = randomWorld(rng, 300, size, 0.3);
         SweepAndPrune sap;
         for (std::size_t i = 0; i < w.centre.size(); ++i) sap.addBody(w.boxes()[i], w.is_static[i]);
+        std::vector<BodyPair> before;
         for (int frame = 0; frame < 100; ++frame) {
             const auto boxes = w.boxes();
             for (std::size_t i = 0; i < boxes.size(); ++i) sap.setAabb(static_cast<int>(i), boxes[i]);
@@ -87,6 +98,8 @@ TEST(SchedulingSweepAndPrune, MatchesBruteForceOverManyFrames) {
             const auto want = bruteForce(boxes, w.is_static, w.alive);
             ASSERT_EQ(sap.pairs(), want) << "jump=" << jump << " frame " << frame << ": "
                                          << firstDifference(sap.pairs(), want);
+            expectChanges(sap, before, want, frame);
+            before = want;
             for (const BodyPair& p : sap.pairs()) ASSERT_FALSE(w.is_static[p.a] && w.is_static[p.b]);
             step(w, rng, size, jump);
         }
@@ -119,6 +132,7 @@ TEST(SchedulingSweepAndPrune, AddAndRemoveBodiesWhileRunning) {
     World w = randomWorld(rng, 50, size, 0.25);
     SweepAndPrune sap;
     for (std::size_t i = 0; i < w.centre.size(); ++i) sap.addBody(w.boxes()[i], w.is_static[i]);
+    std::vector<BodyPair> before;
     for (int frame = 0; frame < 200; ++frame) {
         if (frame % 7 == 3) {   // one new body (incremental path)
             World extra = randomWorld(rng, 1, size, 0.25);
@@ -143,6 +157,8 @@ TEST(SchedulingSweepAndPrune, AddAndRemoveBodiesWhileRunning) {
         sap.update();
         const auto want = bruteForce(boxes, w.is_static, w.alive);
         ASSERT_EQ(sap.pairs(), want) << "frame " << frame << ": " << firstDifference(sap.pairs(), want);
+        expectChanges(sap, before, want, frame);   // removeBody's pairs, the rebuild's and the sort's
+        before = want;
         step(w, rng, size, 0.01);
     }
 }

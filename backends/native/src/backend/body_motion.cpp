@@ -156,7 +156,7 @@ void NativeBackend::startDrift(int body, const BodyImpulse& imp, double t, doubl
 
 bool NativeBackend::touchesMovingTracked(int body) const {
     for (int p : body_pairs_[static_cast<std::size_t>(body)]) {
-        if (!touching_.count(p)) continue;
+        if (!pairs_[static_cast<std::size_t>(p)].touching) continue;
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
         const RigidBody& other = bodies_[static_cast<std::size_t>(ps.a == body ? ps.b : ps.a)];
         if (other.is_kinematic && (!other.velocity.isZero(0.0) || !other.kinematic_angular_velocity.isZero(0.0)))

@@ -15,7 +15,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -28,6 +27,7 @@
 #include "dynamics/contact_solver.h"
 #include "dynamics/persistent_manifold.h"
 #include "dynamics/rigid_body.h"
+#include "memory/sorted_index_set.h"
 #include "narrowphase/proximity.h"
 #include "scheduling/collision_queue.h"
 #include "scheduling/island_builder.h"
@@ -68,7 +68,6 @@ private:
         bool in_contact = false;                       // at its last sample: closer than the collision distance
         bool sampled_once = false;
         bool in_broad_phase = false;
-        std::int64_t broad_stamp = -1;                 // broad-phase update that last listed it
         std::int64_t sampled_step = -1;                // internal step of the last sample
         bool placed_in_window = false;   // within the collision distance since t = 0: resting (deferImpacts)
         // The storage of the pair's last sample, handed back after the step (recycleSamples) and
@@ -251,11 +250,11 @@ private:
     std::vector<std::uint8_t> asleep_;      // per body: at rest and not simulated (native.sleeping)
     std::vector<double> still_since_;       // [s] per body: since when it has been still
     std::vector<int> changed_;              // bodies whose version was bumped since last drained
-    std::vector<int> candidates_;           // pairs_ indices of the current broad-phase pairs
+    std::vector<int> candidates_;           // pairs_ indices of the current broad-phase pairs, in (a, b) order
     // Per-step buffers, emptied and refilled at every internal step: no allocation once warm.
-    std::vector<int> broad_next_, step_due_, step_entered_, step_again_;
+    std::vector<int> step_due_, step_entered_, step_again_;
     std::vector<PairSample> step_samples_, step_resampled_, step_extra_;
-    std::set<int> touching_;                // pairs_ indices of touching pairs (sorted)
+    SortedIndexSet touching_;               // pairs_ indices of touching pairs (ascending)
     CollisionQueue queue_;                  // flight pairs by earliest possible contact time
     IslandBuilder islands_;
     IslandScratch island_scratch_;          // the island stage's buffers, reused from step to step
@@ -266,7 +265,6 @@ private:
     std::unique_ptr<PairPartition> partition_;
     double time_ = 0.0;
     std::int64_t step_index_ = 0;
-    std::int64_t broad_updates_ = 0;
     std::vector<CollisionEvent> events_;
     WarningCounts warnings_;
     NativeStatistics stats_;

@@ -3,6 +3,7 @@
 // boxes), their closest features (the coherent walk), their contact patches reduced to manifolds,
 // and when each pair in flight must be looked at again (the collision queue's key).
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -39,12 +40,15 @@ constexpr double kQueueHorizon = 1.0;
 // Pairs below this count are sampled on the calling thread (waking the pool costs more).
 constexpr std::size_t kMinParallelPairs = 8;
 
+/// (a, b) as one number ordered as the pair: the key of pair_index_ and of the pair lists' order.
+std::uint64_t pairKey(int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
 }  // namespace
 
 NativeBackend::PairState& NativeBackend::pairState(int a, int b) {
-    const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-                              static_cast<std::uint32_t>(b);
-    auto [it, inserted] = pair_index_.try_emplace(key, static_cast<int>(pairs_.size()));
+    auto [it, inserted] = pair_index_.try_emplace(pairKey(a, b), static_cast<int>(pairs_.size()));
     if (inserted) {
         PairState ps;
         ps.a = a;
@@ -70,22 +74,35 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
     }
     if (!changed && !all) return;
     broad_phase_.update();
-    const std::int64_t stamp = ++broad_updates_;
-    std::vector<int>& next = broad_next_;  // becomes candidates_ (the two trade storage)
-    next.clear();
-    for (const BodyPair& bp : broad_phase_.pairs()) {
+    // Only what the broad phase changed is touched. candidates_ and every body's list keep the
+    // broad phase's own (a, b) order, as a walk over all its pairs would give them.
+    auto keyOf = [this](int idx) {
+        const PairState& ps = pairs_[static_cast<std::size_t>(idx)];
+        return pairKey(ps.a, ps.b);
+    };
+    auto insertOrdered = [&keyOf](std::vector<int>& list, int idx) {
+        const std::uint64_t key = keyOf(idx);
+        list.insert(std::lower_bound(list.begin(), list.end(), key, [&keyOf](int x, std::uint64_t k) { return keyOf(x) < k; }),
+                    idx);
+    };
+    auto eraseOrdered = [&keyOf](std::vector<int>& list, int idx) {
+        const std::uint64_t key = keyOf(idx);
+        const auto it = std::lower_bound(list.begin(), list.end(), key, [&keyOf](int x, std::uint64_t k) { return keyOf(x) < k; });
+        assert(it != list.end() && *it == idx);   // every listed pair is in its lists
+        list.erase(it);
+    };
+    for (const BodyPair& bp : broad_phase_.added()) {
         PairState& ps = pairState(bp.a, bp.b);
         const int idx = static_cast<int>(&ps - pairs_.data());
-        ps.broad_stamp = stamp;
-        if (!ps.in_broad_phase) {
-            ps.in_broad_phase = true;
-            entered.push_back(idx);
-        }
-        next.push_back(idx);
+        ps.in_broad_phase = true;
+        entered.push_back(idx);
+        insertOrdered(candidates_, idx);
+        insertOrdered(body_pairs_[static_cast<std::size_t>(bp.a)], idx);
+        insertOrdered(body_pairs_[static_cast<std::size_t>(bp.b)], idx);
     }
-    for (int idx : candidates_) {
+    for (const BodyPair& bp : broad_phase_.removed()) {
+        const int idx = pair_index_.at(pairKey(bp.a, bp.b));
         PairState& ps = pairs_[static_cast<std::size_t>(idx)];
-        if (ps.broad_stamp == stamp) continue;
         ps.in_broad_phase = false;   // its boxes parted: it cannot touch before they meet again
         queue_.removePair(idx);
         if (ps.touching) {
@@ -94,13 +111,9 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
             ticks_dirty_ = true;
         }
         for (PersistentManifold& m : ps.manifolds) m.clear();
-    }
-    std::swap(candidates_, next);
-    for (auto& list : body_pairs_) list.clear();
-    for (int idx : candidates_) {
-        const PairState& ps = pairs_[static_cast<std::size_t>(idx)];
-        body_pairs_[static_cast<std::size_t>(ps.a)].push_back(idx);
-        body_pairs_[static_cast<std::size_t>(ps.b)].push_back(idx);
+        eraseOrdered(candidates_, idx);
+        eraseOrdered(body_pairs_[static_cast<std::size_t>(bp.a)], idx);
+        eraseOrdered(body_pairs_[static_cast<std::size_t>(bp.b)], idx);
     }
 }
 

@@ -42,10 +42,17 @@ void SweepAndPrune::removeBody(int body) {
                    axis.end());
     }
     const auto before_size = pairs_.size();
+    for (const BodyPair& p : pairs_)
+        if (p.a == body || p.b == body) removed_with_bodies_.push_back(p);
     pairs_.erase(std::remove_if(pairs_.begin(), pairs_.end(),
                                 [body](const BodyPair& p) { return p.a == body || p.b == body; }),
                  pairs_.end());
     stats_.pairs_removed += static_cast<std::int64_t>(before_size - pairs_.size());
+}
+
+void SweepAndPrune::recordChanges(const std::vector<BodyPair>& next) {
+    std::set_difference(next.begin(), next.end(), pairs_.begin(), pairs_.end(), std::back_inserter(last_added_));
+    std::set_difference(pairs_.begin(), pairs_.end(), next.begin(), next.end(), std::back_inserter(last_removed_));
 }
 
 void SweepAndPrune::setAabb(int body, const Aabb& box) {
@@ -108,16 +115,21 @@ void SweepAndPrune::applyChanges() {
     if (added_.empty() && dropped_.empty()) return;
     sortUnique(added_);
     sortUnique(dropped_);
+    // What changes, found by binary search in the old set (a few pairs against many): a dropped
+    // pair leaves if it was there; an added one enters unless it was there or is dropped again.
+    auto had = [this](const BodyPair& p) { return std::binary_search(pairs_.begin(), pairs_.end(), p); };
+    std::erase_if(added_, [&](const BodyPair& p) { return had(p) || std::binary_search(dropped_.begin(), dropped_.end(), p); });
+    std::erase_if(dropped_, [&](const BodyPair& p) { return !had(p); });
     std::vector<BodyPair>& merged = merged_;
     merged.clear();
-    std::set_union(pairs_.begin(), pairs_.end(), added_.begin(), added_.end(),
-                   std::back_inserter(merged));
+    std::set_union(pairs_.begin(), pairs_.end(), added_.begin(), added_.end(), std::back_inserter(merged));
     std::vector<BodyPair>& result = result_;  // trades storage with pairs_ below
     result.clear();
-    std::set_difference(merged.begin(), merged.end(), dropped_.begin(), dropped_.end(),
-                        std::back_inserter(result));
-    stats_.pairs_added += static_cast<std::int64_t>(merged.size() - pairs_.size());
-    stats_.pairs_removed += static_cast<std::int64_t>(merged.size() - result.size());
+    std::set_difference(merged.begin(), merged.end(), dropped_.begin(), dropped_.end(), std::back_inserter(result));
+    stats_.pairs_added += static_cast<std::int64_t>(added_.size());
+    stats_.pairs_removed += static_cast<std::int64_t>(dropped_.size());
+    last_added_.insert(last_added_.end(), added_.begin(), added_.end());
+    last_removed_.insert(last_removed_.end(), dropped_.begin(), dropped_.end());
     pairs_.swap(result);
     added_.clear();
     dropped_.clear();
@@ -147,19 +159,18 @@ void SweepAndPrune::rebuild() {
         active.push_back(e.body);
     }
     sortUnique(found);
-    std::vector<BodyPair> diff;
-    std::set_difference(found.begin(), found.end(), pairs_.begin(), pairs_.end(),
-                        std::back_inserter(diff));
-    stats_.pairs_added += static_cast<std::int64_t>(diff.size());
-    diff.clear();
-    std::set_difference(pairs_.begin(), pairs_.end(), found.begin(), found.end(),
-                        std::back_inserter(diff));
-    stats_.pairs_removed += static_cast<std::int64_t>(diff.size());
+    const std::size_t added_before = last_added_.size(), removed_before = last_removed_.size();
+    recordChanges(found);
+    stats_.pairs_added += static_cast<std::int64_t>(last_added_.size() - added_before);
+    stats_.pairs_removed += static_cast<std::int64_t>(last_removed_.size() - removed_before);
     pairs_.swap(found);
 }
 
 void SweepAndPrune::update() {
     ++stats_.updates;
+    last_added_.clear();
+    last_removed_.swap(removed_with_bodies_);
+    removed_with_bodies_.clear();
     writeValues();
     if (pending_new_ > 64 && 8 * pending_new_ > bodyCount()) {
         rebuild();
@@ -168,6 +179,7 @@ void SweepAndPrune::update() {
         applyChanges();
     }
     pending_new_ = 0;
+    sortUnique(last_removed_);   // removeBody's pairs and this update's, in (a, b) order
 }
 
 }  // namespace vroc::native

@@ -8,6 +8,8 @@
 // The boxes come from the caller, already expanded by the motion over the frame (MotionBound::
 // sweptAabb). Pairs of two static bodies are never produced (the paper's rule: no checks between
 // real objects). pairs() is sorted by (a, b) with a < b: the same for any history of the same boxes.
+// added() and removed() are what the last update() changed in it (removeBody's pairs included), so
+// a caller keeps its own per-pair state without walking every pair at every update.
 #pragma once
 
 #include <cstdint>
@@ -47,6 +49,11 @@ public:
 
     /// Overlapping pairs (not both of infinite mass: static or tracked), sorted by (a, b).
     const std::vector<BodyPair>& pairs() const { return pairs_; }
+    /// Pairs that the last update() added to pairs(), sorted by (a, b).
+    const std::vector<BodyPair>& added() const { return last_added_; }
+    /// Pairs that left pairs() in the last update() or in removeBody() since the update before,
+    /// sorted by (a, b).
+    const std::vector<BodyPair>& removed() const { return last_removed_; }
     const SweepAndPruneStats& stats() const { return stats_; }
     int bodyCount() const { return static_cast<int>(boxes_.size()); }
     bool hasInfiniteMass(int body) const { return infinite_mass_[body] != 0; }
@@ -66,6 +73,8 @@ private:
     void onBegin(int body_x, int body_y);
     void onEnd(int body_x, int body_y);
     void applyChanges();
+    /// last_added_ and last_removed_ from the pair set before (pairs_) and after (`next`).
+    void recordChanges(const std::vector<BodyPair>& next);
     bool pairAllowed(int x, int y) const;
 
     std::vector<Aabb> boxes_;
@@ -76,6 +85,8 @@ private:
     std::vector<BodyPair> added_;     // this update's candidate additions
     std::vector<BodyPair> dropped_;   // this update's candidate removals
     std::vector<BodyPair> merged_, result_;  // applyChanges' buffers, kept between updates
+    std::vector<BodyPair> last_added_, last_removed_;   // what the last update() changed
+    std::vector<BodyPair> removed_with_bodies_;          // removeBody() since the last update()
     int pending_new_ = 0;             // bodies added since the last update()
     SweepAndPruneStats stats_;
 };
