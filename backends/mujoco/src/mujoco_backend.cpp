@@ -175,19 +175,33 @@ void MujocoBackend::internalStep(double h, double end_time) {
         if (rec.role == BodyRole::Tracked) placeTracked(rec, end_time);
 }
 
-// One mj_step, checked. A bad step is undone (state_guard.h); if that put a body back, the step
-// is taken once more from the repaired state, and if it fails again the blamed bodies stay at
-// their last good pose, at rest, for this step.
+// One mj_step, checked. A step that overflowed MuJoCo's buffers (the contact list, the constraint
+// rows, the scratch stack) is taken again from its start with larger ones (growBuffers), so no
+// contact is dropped for want of room. A bad step is undone (state_guard.h); if that put a body
+// back, the step is taken once more from the repaired state, and if it fails again the blamed
+// bodies stay at their last good pose, at rest, for this step.
 void MujocoBackend::mujocoStep(double h, double end_time) {
     for (int attempt = 0; attempt < 2; ++attempt) {
         guard_.beforeStep(*data_);
-        holdTrackedWeight();   // (a reset after an error clears qfrc_applied)
-        data_->time = end_time - h;
         bool threw = false;
-        try {
-            mj_step(model_.get(), data_.get());
-        } catch (const RunError&) {   // from the error handler (model_loader.h)
-            threw = true;
+        for (int growth = 0;; ++growth) {
+            holdTrackedWeight();   // (a reset after an error clears qfrc_applied)
+            data_->time = end_time - h;
+            threw = false;
+            std::string error;
+            try {
+                mj_step(model_.get(), data_.get());
+            } catch (const RunError& e) {   // from the error handler (model_loader.h)
+                threw = true;
+                error = e.what();
+            }
+            const bool contacts_full = data_->warning[mjWARN_CONTACTFULL].number > 0;
+            const bool rows_full = data_->warning[mjWARN_CNSTRFULL].number > 0;
+            const bool stack_full = threw && error.find("tack overflow") != std::string::npos;
+            if (!(contacts_full || rows_full || stack_full) || growth >= kMaxGrowthsPerStep ||
+                !growBuffers(contacts_full, rows_full, stack_full))
+                break;
+            guard_.restoreStart(*data_);   // the new mjData starts where the step started
         }
         ++internal_steps_;
         if (guard_.afterStep(*model_, *data_, threw)) {
@@ -202,6 +216,42 @@ void MujocoBackend::mujocoStep(double h, double end_time) {
         events_.reset();
         if (put_back == 0) return;   // nothing changed: a retry would repeat the trouble
     }
+}
+
+// Doubles what overflowed and allocates a new mjData (MuJoCo 2.2 sizes it from the model once).
+// The constraint rows are dear in 2.2 (njmax x njmax and njmax x nv arrays): they grow only while
+// those arrays stay within kMaxRowBytes; past that a full row list stays counted as
+// mujoco.constraint_full (rows dropped). Returns false when nothing could grow.
+bool MujocoBackend::growBuffers(bool contacts, bool rows, bool stack) {
+    mjModel& m = *model_;
+    const int old_nconmax = m.nconmax, old_njmax = m.njmax, old_nstack = m.nstack;
+    const auto rowBytes = [&m](double r) { return 12.0 * r * r + 24.0 * r * m.nv; };
+    bool grown = false;
+    if (contacts && m.nconmax < (1 << 24)) {
+        m.nconmax *= 2;
+        grown = true;
+    }
+    if (rows && rowBytes(2.0 * m.njmax) <= kMaxRowBytes) {
+        m.njmax *= 2;
+        grown = true;
+    }
+    // The scratch stack holds arrays linear in the rows and dofs (mjcf_writer.cpp's first guess).
+    const long needed = 1000000L + 2000L * (static_cast<long>(m.nv) + m.njmax);
+    if ((stack || needed > m.nstack) && m.nstack < (1 << 28)) {
+        m.nstack = static_cast<int>(std::max(needed, stack ? 2L * m.nstack : needed));
+        grown = true;
+    }
+    if (!grown) return false;
+    try {
+        data_ = makeData(m);
+    } catch (const InputError&) {   // MuJoCo could not allocate it: keep the old buffers
+        m.nconmax = old_nconmax;
+        m.njmax = old_njmax;
+        m.nstack = old_nstack;
+        return false;
+    }
+    ++buffer_growths_;
+    return true;
 }
 
 // A tracked body's weight, cancelled on its free joint's translational dofs (MuJoCo 2.2 has no
@@ -347,6 +397,10 @@ Statistics MujocoBackend::statistics() const {
         {"mujoco.explicit_pairs", static_cast<double>(model_->npair)},
         {"mujoco.constraint_rows", static_cast<double>(last_nefc_)},
         {"mujoco.solver_iterations_mean", steps > 0 ? static_cast<double>(solver_iterations_) / steps : 0.0},
+        {"mujoco.buffer_growths", static_cast<double>(buffer_growths_)},
+        {"mujoco.nconmax", static_cast<double>(model_->nconmax)},
+        {"mujoco.njmax", static_cast<double>(model_->njmax)},
+        {"mujoco.nstack", static_cast<double>(model_->nstack)},
     };
 }
 

@@ -54,6 +54,9 @@ private:
     BodyRecord& record(int body, const char* what);
     void internalStep(double h, double end_time);
     void mujocoStep(double h, double end_time);        ///< one checked mj_step (and its recovery)
+    bool growBuffers(bool contacts, bool rows, bool stack);   ///< larger buffers, a new mjData
+    static constexpr int kMaxGrowthsPerStep = 8;
+    static constexpr double kMaxRowBytes = 1e9;   ///< [bytes] of njmax-sized arrays (MuJoCo 2.2's dense rows)
     void placeTracked(BodyRecord& rec, double time);   ///< qpos, qvel from the tracker motion at `time` [s]
     void holdTrackedWeight();                          ///< qfrc_applied = -m g on each tracked body
     Pose comPose(const BodyRecord& rec) const;
@@ -67,6 +70,7 @@ private:
     double time_ = 0.0;   ///< [s] sum of frame dts
     std::uint64_t frames_ = 0, internal_steps_ = 0, nonfinite_ = 0, step_cap_ = 0, solver_iterations_ = 0;
     int last_ncon_ = 0, last_nefc_ = 0;
+    std::uint64_t buffer_growths_ = 0;   ///< steps taken again with larger buffers (growBuffers)
 };
 
 }  // namespace vroc::mujoco

@@ -68,7 +68,8 @@ void registerBackend() {
         "mass along the principal axes",
         "messages: warnings are counted, not printed; an error (mju_error) is caught instead of ending the process",
         "buffer sizes: from the scene, nconmax = max(100, 8 x virtual geoms), njmax = max(500, 4 x nconmax) up to "
-        "256 MB of constraint arrays, nstack 1e6 + 2000 (nv + njmax) (MuJoCo's default room of 100 contacts overflows on any box stack)",
+        "256 MB of constraint arrays, nstack 1e6 + 2000 (nv + njmax) (MuJoCo's default room of 100 contacts overflows on any box stack); "
+        "a step that overflows one is taken again with it doubled (rows up to 1 GB of arrays; mujoco.buffer_growths)",
         "solver scale in scenes with tracked bodies: <statistic meaninertia> of the virtual bodies alone, so the "
         "tracked bodies' 1e6 masses (see the tracked note) do not loosen the solver's tolerance",
     };

@@ -100,6 +100,13 @@ int StateGuard::recover(const mjModel& m, mjData& d, bool at_rest) {
     return put_back;
 }
 
+void StateGuard::restoreStart(mjData& d) const {
+    std::copy(pre_qpos_.begin(), pre_qpos_.end(), d.qpos);
+    std::copy(pre_qvel_.begin(), pre_qvel_.end(), d.qvel);
+    std::copy(pre_warm_.begin(), pre_warm_.end(), d.qacc_warmstart);
+    for (mjWarningStat& w : d.warning) w = mjWarningStat{0, 0};
+}
+
 WarningCounts StateGuard::counts() const {
     return {{"mujoco.bad_qpos", bad_qpos_},         {"mujoco.bad_qvel", bad_qvel_},
             {"mujoco.bad_qacc", bad_qacc_},         {"mujoco.contact_full", contact_full_},

@@ -37,6 +37,10 @@ public:
     /// rest if `at_rest`). Returns how many bodies were put back (0: the starting state stands).
     int recover(const mjModel& m, mjData& d, bool at_rest);
 
+    /// Puts the state the current step started from into `d` (a new mjData with larger buffers),
+    /// warnings cleared: the step can be taken again.
+    void restoreStart(mjData& d) const;
+
     /// MuJoCo's own warnings so far, as "mujoco.<name>" (always every name, 0 when never raised).
     WarningCounts counts() const;
 
