@@ -36,7 +36,7 @@ void registerBackend() {
     c.compound = Support::Exact;
     c.restitution = Support::Approximated;
     c.tracked = Support::Exact;   // kinematic bodies: infinite mass, their velocity in the contact solve
-    c.friction = FrictionModel::Pyramid;
+    c.friction = FrictionModel::Cone;   // one row along the slip (see the note), not a pyramid
     c.continuous_collision = true;
     c.deterministic = true;
     c.precision = "double";
@@ -44,13 +44,20 @@ void registerBackend() {
     c.notes["hull"] = "faces shrunk by the margin so the rounded surface lies on the scene's faces; edges and "
                       "corners rounded by it";
     c.notes["restitution"] = "approach speeds below bullet.restitution_threshold (0.2 m/s) bounce with e = 0";
-    c.notes["friction"] = "two orthogonal friction rows per contact point, each clamped to mu x normal impulse";
+    c.notes["friction"] = "one friction row per contact point, along the sliding velocity, clamped to mu x normal impulse "
+                          "(Bullet 3.24's default solver mode, warm starting + SIMD, without "
+                          "SOLVER_USE_2_FRICTION_DIRECTIONS): a sliding point meets Coulomb's circular cone; a point "
+                          "that does not slide gets one row along btPlaneSpace1's first axis";
     c.notes["continuous_collision"] = "swept sphere of the inner radius (Bullet's CCD), not exact time of impact";
     info.deviations = {
         "double precision (bullet-float64): every backend solves in double",
         "sleeping off (DISABLE_DEACTIVATION): comparisons keep every body awake on every backend",
         "material rule: restitution = min, friction = geometric mean (the scene's rule; Bullet multiplies both)",
-        "swept-sphere CCD on for virtual bodies (Bullet: off): the scenes throw fast bodies at thin walls",
+        "swept-sphere CCD on for virtual bodies (Bullet: off): the scenes throw fast bodies at thin walls; "
+        "the swept sphere's radius is half the body's inner radius and the motion threshold the inner radius "
+        "(Bullet has no default for either: CCD is off)",
+        "box margin: bullet.margin, but at most a quarter of the box's smallest half extent, so a thin plate keeps "
+        "a flat face (Bullet's own default margin is 0.04 m whatever the box)",
         "hull faces shrunk by the margin (bullet.shrink_hulls): surfaces where the scene puts them",
     };
     info.settings = bulletSettingSpecs();

@@ -57,6 +57,10 @@ void registerBackend() {
         "with libccd's MPR, one contact point per pair, and a resting hull cube topples (docs/ode-backend.md)",
         "QuickStep's random constraint order: each backend keeps its own state of ODE's process-wide dRand "
         "generator, so a run's bits do not depend on other ODE worlds in the process",
+        "step rate: one world step per frame (ode.substeps = 1); ODE has no step size of its own, the caller "
+        "picks it, and one step per frame is how a game or a simulator drives it",
+        "contacts per geom pair: at most ode.max_contacts = 4 asked of dCollide (ODE has no default: the caller "
+        "passes the room; box-box can report up to 8)",
     };
     info.settings = odeSettingSpecs();
     info.create = &create;

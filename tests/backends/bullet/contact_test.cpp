@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "test_scenes.h"
+#include "vroc/core/backend_registry.h"
 #include "vroc/core/state_hash.h"
 
 namespace vroc::test {
@@ -128,6 +129,30 @@ TEST(BulletContact, SameSceneTwiceGivesTheSameStateHash) {
     run(*b, 1.0 / 60, 180);
     EXPECT_EQ(stateHash(*a), stateHash(*b));
     EXPECT_GT(a->statistics().at("collision_events"), 6);   // they did collide
+}
+
+}  // namespace
+}  // namespace vroc::test
+
+namespace vroc::test {
+namespace {
+
+// The declared friction model (registration.cpp: Cone, one row along the slip) against a box sliding
+// diagonally: Coulomb's cone keeps the heading and decelerates by mu g along it; two orthogonal rows
+// each clamped to mu N (a pyramid) would stop the smaller component first and turn the box toward
+// the larger axis.
+TEST(BulletFriction, ADiagonalSlideKeepsItsHeadingAsTheDeclaredConeSays) {
+    Scene scene = emptyScene(0.0, 0.5);
+    addFloor(scene);
+    const double heading = 0.5236;   // 30 degrees
+    const int box = addBox(scene, "box", Vec3(0.1, 0.1, 0.1), 1.0, Vec3(0, 0, 0.1));
+    scene.bodies[static_cast<std::size_t>(box)].linear_velocity = 3.0 * Vec3(std::cos(heading), std::sin(heading), 0);
+    auto backend = makeBullet(scene);   // (registers it)
+    EXPECT_EQ(BackendRegistry::global().require("bullet").capabilities.friction, FrictionModel::Cone);
+    for (int f = 0; f < 12; ++f) backend->stepFrame(scene.frame_dt);   // 0.2 s: still sliding (stops at 3 / (0.5 g) = 0.61 s)
+    const Vec3 v = backend->bodyState(box).linear_velocity;
+    EXPECT_NEAR(std::atan2(v.y(), v.x()), heading, 0.5 * M_PI / 180);
+    EXPECT_NEAR(v.head<2>().norm(), 3.0 - 0.5 * 9.81 * 0.2, 0.05);
 }
 
 }  // namespace
