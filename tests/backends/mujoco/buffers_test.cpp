@@ -27,9 +27,11 @@ TEST(MujocoBuffers, NinePyramidsDropNoContactAndGrowTheirBuffers) {
     const Statistics st = backend->statistics();
     EXPECT_GE(st.at("mujoco.buffer_growths"), 1.0);   // the first guess was too small: it grew
     // Every box is still on its pyramid (nothing fell through for a dropped contact).
-    for (int i = 0; i < backend->bodyCount(); ++i)
-        if (scene.bodies[static_cast<std::size_t>(i)].isDynamic())
+    for (int i = 0; i < backend->bodyCount(); ++i) {
+        if (scene.bodies[static_cast<std::size_t>(i)].isDynamic()) {
             EXPECT_GT(backend->bodyState(i).pose.position.z(), 0.0) << scene.bodies[static_cast<std::size_t>(i)].name;
+        }
+    }
 }
 
 TEST(MujocoBuffers, FourHundredBoxesInABinStepWithoutStackErrors) {
