@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "py_convert.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <cstdio>
 
 #include "vroc/core/errors.h"
@@ -94,13 +96,18 @@ Vec3 vec3From(const py::handle& value, const char* what) {
     throw InputError(std::string(what) + ": expected three numbers");
 }
 
-py::array_t<double> vec3Array(const Vec3& v) {
-    py::array_t<double> a(3);
-    double* d = a.mutable_data();
-    d[0] = v.x();
-    d[1] = v.y();
-    d[2] = v.z();
+namespace {
+
+py::array_t<double> numbers(std::initializer_list<double> values) {
+    py::array_t<double> a(static_cast<py::ssize_t>(values.size()));
+    std::copy(values.begin(), values.end(), a.mutable_data());
     return a;
 }
+
+}  // namespace
+
+py::array_t<double> vec3Array(const Vec3& v) { return numbers({v.x(), v.y(), v.z()}); }
+
+py::array_t<double> quatArray(const Quat& q) { return numbers({q.x(), q.y(), q.z(), q.w()}); }
 
 }  // namespace vroc::python

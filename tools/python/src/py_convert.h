@@ -36,5 +36,7 @@ py::dtype eventDtype();
 /// A 3-vector from any sequence of three numbers; InputError naming `what` otherwise.
 Vec3 vec3From(const py::handle& value, const char* what);
 py::array_t<double> vec3Array(const Vec3& v);
+/// x y z w, the files' order.
+py::array_t<double> quatArray(const Quat& q);
 
 }  // namespace vroc::python

@@ -23,16 +23,6 @@ const char* roleName(BodyRole role) {
     return "?";
 }
 
-py::array_t<double> quatArray(const Quat& q) {
-    py::array_t<double> a(4);
-    double* d = a.mutable_data();
-    d[0] = q.x();
-    d[1] = q.y();
-    d[2] = q.z();
-    d[3] = q.w();
-    return a;
-}
-
 }  // namespace
 
 void bindScene(py::module_& m) {

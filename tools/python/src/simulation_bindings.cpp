@@ -24,8 +24,8 @@
 namespace vroc::python {
 namespace {
 
-/// The arrays of one snapshot of every body's state.
-struct Snapshot {
+/// The read-only arrays of one snapshot of every body's state.
+struct StateViews {
     py::array_t<double> positions, orientations, linear_velocities, angular_velocities;
 };
 
@@ -48,7 +48,7 @@ public:
             std::lock_guard lock(mutex_);
             sim_.step(frames);
         }
-        snapshot_.reset();
+        views_.reset();
     }
     std::int64_t run(double seconds) {
         std::int64_t n = 0;
@@ -57,15 +57,15 @@ public:
             std::lock_guard lock(mutex_);
             n = sim_.run(seconds);
         }
-        snapshot_.reset();
+        views_.reset();
         return n;
     }
 
-    const Snapshot& snapshot() {
-        if (snapshot_) return *snapshot_;
+    const StateViews& views() {
+        if (views_) return *views_;
         std::lock_guard lock(mutex_);
         const auto n = static_cast<py::ssize_t>(sim_.bodyCount());
-        Snapshot s{py::array_t<double>({n, py::ssize_t{3}}), py::array_t<double>({n, py::ssize_t{4}}),
+        StateViews s{py::array_t<double>({n, py::ssize_t{3}}), py::array_t<double>({n, py::ssize_t{4}}),
                    py::array_t<double>({n, py::ssize_t{3}}), py::array_t<double>({n, py::ssize_t{3}})};
         double* p = s.positions.mutable_data();
         double* q = s.orientations.mutable_data();
@@ -79,9 +79,9 @@ public:
             for (int k = 0; k < 3; ++k) v[3 * i + k] = row[kLinearVelocityColumn + k];
             for (int k = 0; k < 3; ++k) w[3 * i + k] = row[kAngularVelocityColumn + k];
         }
-        snapshot_ = Snapshot{readOnly(s.positions), readOnly(s.orientations), readOnly(s.linear_velocities),
+        views_ = StateViews{readOnly(s.positions), readOnly(s.orientations), readOnly(s.linear_velocities),
                              readOnly(s.angular_velocities)};
-        return *snapshot_;
+        return *views_;
     }
 
     py::array_t<double> state() {
@@ -104,7 +104,7 @@ public:
             std::lock_guard lock(mutex_);
             sim_.setStates(states);
         }
-        snapshot_.reset();
+        views_.reset();
     }
 
     void applyImpulse(int body, const py::handle& impulse, const py::handle& point) {
@@ -114,7 +114,7 @@ public:
             std::lock_guard lock(mutex_);
             sim_.applyImpulse(body, j, x);
         }
-        snapshot_.reset();
+        views_.reset();
     }
 
     void restore(const Simulation::Snapshot& snapshot) {
@@ -123,7 +123,7 @@ public:
             std::lock_guard lock(mutex_);
             sim_.restore(snapshot);
         }
-        snapshot_.reset();
+        views_.reset();
     }
 
     Simulation& sim() { return sim_; }
@@ -132,8 +132,18 @@ public:
 private:
     Simulation sim_;
     std::mutex mutex_;   // a second Python thread must not read while this simulation steps without the GIL
-    std::optional<Snapshot> snapshot_;
+    std::optional<StateViews> views_;
 };
+
+/// A binding that calls f(simulation) under the simulation's lock (another Python thread may be
+/// stepping it without the GIL).
+template <class F>
+auto locked(F f) {
+    return [f](PySimulation& s) {
+        std::lock_guard lock(s.mutex());
+        return f(s.sim());
+    };
+}
 
 std::shared_ptr<const Scene> sceneFrom(const py::handle& scene) {
     if (py::isinstance<Scene>(scene)) return scene.cast<std::shared_ptr<Scene>>();
@@ -174,13 +184,13 @@ void bindSimulation(py::module_& m) {
         .def_property_readonly("scene", [](PySimulation& s) { return std::make_shared<Scene>(s.sim().scene()); },
                                "a copy of the scene")
         .def_property_readonly("body_count", [](PySimulation& s) { return s.sim().bodyCount(); })
-        .def_property_readonly("positions", [](PySimulation& s) { return s.snapshot().positions; },
+        .def_property_readonly("positions", [](PySimulation& s) { return s.views().positions; },
                                "(N, 3) [m] body frame origins; read-only snapshot")
-        .def_property_readonly("orientations", [](PySimulation& s) { return s.snapshot().orientations; },
+        .def_property_readonly("orientations", [](PySimulation& s) { return s.views().orientations; },
                                "(N, 4) unit quaternions x y z w; read-only snapshot")
-        .def_property_readonly("linear_velocities", [](PySimulation& s) { return s.snapshot().linear_velocities; },
+        .def_property_readonly("linear_velocities", [](PySimulation& s) { return s.views().linear_velocities; },
                                "(N, 3) [m/s] of the centres of mass; read-only snapshot")
-        .def_property_readonly("angular_velocities", [](PySimulation& s) { return s.snapshot().angular_velocities; },
+        .def_property_readonly("angular_velocities", [](PySimulation& s) { return s.views().angular_velocities; },
                                "(N, 3) [rad/s]; read-only snapshot")
         .def("state", &PySimulation::state,
              "(N, 13) writable copy: position, orientation x y z w, linear velocity, angular velocity")
@@ -189,53 +199,21 @@ void bindSimulation(py::module_& m) {
              "equal its current state; a tracked body takes its row as a tracker sample.")
         .def("apply_impulse", &PySimulation::applyImpulse, py::arg("body"), py::arg("impulse"), py::arg("point"),
              "Applies an impulse [N s] at a world point [m] to a virtual body.")
-        .def(
-            "snapshot",
-            [](PySimulation& s) {
-                std::lock_guard lock(s.mutex());
-                return s.sim().snapshot();
-            },
-            "A Snapshot of this simulation, for restore().")
+        .def("snapshot", locked([](Simulation& s) { return s.snapshot(); }), "A Snapshot of this simulation, for restore().")
         .def("restore", &PySimulation::restore, py::arg("snapshot"),
              "Brings the simulation back to a snapshot of it, the same bits on every backend: a fresh backend "
              "replays the snapshot's inputs and frames (so it costs those frames again). Events and step times "
              "start afresh.")
-        .def(
-            "events",
-            [](PySimulation& s) {
-                std::lock_guard lock(s.mutex());
-                return eventArray(s.sim().takeEvents());
-            },
-            "Collision events since the previous call: a structured array of dtype vroc.EVENT_DTYPE.")
-        .def(
-            "statistics",
-            [](PySimulation& s) {
-                std::lock_guard lock(s.mutex());
-                return s.sim().statistics();
-            },
-            "Backend statistics {name: value}")
-        .def(
-            "warnings",
-            [](PySimulation& s) {
-                std::lock_guard lock(s.mutex());
-                return s.sim().warnings();
-            },
-            "Counted numerical warnings {name: count}")
-        .def_property_readonly(
-            "state_hash",
-            [](PySimulation& s) {
-                std::lock_guard lock(s.mutex());
-                return s.sim().stateHash();
-            },
-            "FNV-1a over every body's state bits: equal to `vroc run`'s state_hash after the same frames")
-        .def_property_readonly(
-            "step_times",
-            [](PySimulation& s) {
-                std::lock_guard lock(s.mutex());
-                const auto& t = s.sim().stepWallTimes();
-                return py::array_t<double>(static_cast<py::ssize_t>(t.size()), t.data());
-            },
-            "[s] wall time of every frame's stepFrame")
+        .def("events", locked([](Simulation& s) { return eventArray(s.takeEvents()); }), "Collision events since the previous call: a structured array of dtype vroc.EVENT_DTYPE.")
+        .def("statistics", locked([](Simulation& s) { return s.statistics(); }), "Backend statistics {name: value}")
+        .def("warnings", locked([](Simulation& s) { return s.warnings(); }), "Counted numerical warnings {name: count}")
+        .def_property_readonly("state_hash", locked([](Simulation& s) { return s.stateHash(); }), "FNV-1a over every body's state bits: equal to `vroc run`'s state_hash after the same frames")
+        .def_property_readonly("step_times",
+                               locked([](Simulation& s) {
+                                   const auto& t = s.stepWallTimes();
+                                   return py::array_t<double>(static_cast<py::ssize_t>(t.size()), t.data());
+                               }),
+                               "[s] wall time of every frame's stepFrame")
         .def_property_readonly("last_step_span", [](PySimulation& s) { return s.sim().lastStepSpan(); },
                                "(start, end) [s, steady clock] of the last step()/run() call's stepping")
         .def("__repr__", [](PySimulation& s) {
