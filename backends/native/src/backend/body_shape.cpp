@@ -25,6 +25,26 @@ void addPart(const Shape& shape, const Pose& local, std::vector<ConvexPart>& par
             for (const ShapePart& sub : shape.parts) addPart(sub.shape, local * sub.pose, parts);
             return;
     }
+    // A ball holding the part (centred on its vertices' mean): compound pairs skip part pairs whose
+    // balls are far apart, and carried manifolds bound the turn at the contact by it.
+    if (p.is_sphere) {
+        p.bound_center = local.position;
+        p.bound_radius = p.radius;
+        p.box_lower = Vec3::Constant(-p.radius);
+        p.box_upper = Vec3::Constant(p.radius);
+    } else {
+        p.box_lower = Vec3::Constant(std::numeric_limits<double>::infinity());
+        p.box_upper = -p.box_lower;
+        for (int v = 0; v < p.mesh->vertexCount(); ++v) {
+            p.box_lower = p.box_lower.cwiseMin(p.mesh->position(v));
+            p.box_upper = p.box_upper.cwiseMax(p.mesh->position(v));
+        }
+        Vec3 sum = Vec3::Zero();
+        for (int v = 0; v < p.mesh->vertexCount(); ++v) sum += local.apply(p.mesh->position(v));
+        p.bound_center = sum / static_cast<double>(std::max(1, p.mesh->vertexCount()));
+        for (int v = 0; v < p.mesh->vertexCount(); ++v)
+            p.bound_radius = std::max(p.bound_radius, (local.apply(p.mesh->position(v)) - p.bound_center).norm());
+    }
     parts.push_back(std::move(p));
 }
 
@@ -54,6 +74,11 @@ BodyShape BodyShape::fromScene(const Shape& shape, const Vec3& com) {
     }
     s.inner_radius = std::min(s.inner_radius, s.outer_radius);
     return s;
+}
+
+double ConvexPart::gapToBall(const Pose& world, const Vec3& center, double radius) const {
+    const Vec3 c = world.applyInverse(center);
+    return (c - c.cwiseMax(box_lower).cwiseMin(box_upper)).norm() - radius;
 }
 
 SupportPoints ConvexPart::supportPoints(const Pose& world) const {

@@ -18,6 +18,13 @@ struct ConvexPart {
     double radius = 0.0;                          ///< [m] sphere radius
     std::shared_ptr<const ConvexMesh> mesh;       ///< polyhedra: shared, immutable
     Pose local;                                   ///< part frame -> scene body frame
+    Vec3 bound_center = Vec3::Zero();             ///< [m] centre of a ball holding the part, scene body frame
+    double bound_radius = 0.0;                    ///< [m] its radius
+    Vec3 box_lower = Vec3::Zero();                ///< [m] the part's box in its own frame
+    Vec3 box_upper = Vec3::Zero();
+    /// [m] A lower bound on the distance from the part (at `world`: part frame -> world) to a ball
+    /// of `radius` about `center` (world): the ball against the part's own box.
+    double gapToBall(const Pose& world, const Vec3& center, double radius) const;
 
     /// The part's support points at `world` (part frame -> world): a polytope's vertices, or a
     /// sphere's centre padded by its radius.

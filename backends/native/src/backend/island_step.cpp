@@ -17,6 +17,8 @@ namespace {
 // A point of a new manifold takes the warm-start impulse of a cached point closer than this
 // fraction of the smaller body's outer radius (in A's frame).
 constexpr double kMatchFraction = 0.05;
+// A resting patch approaching slower than this fraction of g x tick is left to the contact phase.
+constexpr double kQuietApproach = 1e-6;
 
 }  // namespace
 
@@ -372,6 +374,10 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
         fastest = std::max(fastest, in);
     }
     if (selected.empty() || !(fastest > 0.0)) return false;
+    // A resting patch whose approach is far below what gravity adds in a tick is the last solve's
+    // rounding: the contact phase holds it at the tick's end (an impulse here would only re-solve
+    // what that solve left).
+    if (resting && fastest <= kQuietApproach * resting_speed) return false;
     // A resting patch (held by the last solve) approaching slower than gravity closes in a tick is
     // stopped plastically at its touching centroid, one impulse as in issue 9 (a pile's patches,
     // every tick); a faster one (an impact, a rocking plate) is resolved over its points.

@@ -27,6 +27,7 @@
 #include "dynamics/contact_solver.h"
 #include "dynamics/persistent_manifold.h"
 #include "dynamics/rigid_body.h"
+#include "narrowphase/manifold_anchor.h"
 #include "memory/sorted_index_set.h"
 #include "narrowphase/proximity.h"
 #include "scheduling/collision_queue.h"
@@ -58,12 +59,16 @@ private:
     struct PartGap {
         double distance;
         Vec3 normal;
+        /// The distance is only a lower bound (two far part balls, not queried) and the normal only
+        /// the direction between their centres: scheduling takes the direction-free bound.
+        bool bounded = false;
     };
     /// Persistent per body pair: feature caches, manifold caches and scheduling state.
     struct PairState {
         int a = -1, b = -1;
         std::vector<FeatureCache> caches;              // parts(a) x parts(b), row-major
         std::vector<PersistentManifold> manifolds;     // same indexing: warm-start impulses
+        std::vector<ManifoldAnchor> anchors;           // same indexing: last queried manifolds (carried)
         bool touching = false;                         // at its last sample: it had a manifold (islands)
         bool in_contact = false;                       // at its last sample: closer than the collision distance
         bool sampled_once = false;
@@ -85,6 +90,7 @@ private:
         std::vector<int> manifold_part;   ///< part-pair index of each manifold (its cache)
         std::vector<PartGap> parts;       ///< every part pair's gap and normal
         int queries = 0, walk_steps = 0, max_walk = 0, not_converged = 0;
+        int carried = 0;   ///< manifolds carried from the last query instead of queried (manifold_anchor.h)
         bool deferred = false;   ///< approaching impact moved to its refined touching time (deferImpacts)
         double contact_time = 0.0;   ///< [s] deferred: when it is resolved (the refined touching time)
         double reach = 0.0;          ///< [m] the patch reach the manifolds were built with (patchReach)

@@ -34,6 +34,16 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "relative velocity by more than this (0: always run every sweep)"});
     s.push_back({"native.contact_substeps", T::Integer, "1", 1, 1000, {},
                  "island ticks per frame: the contact phase's step is frame_dt / this"});
+    s.push_back({"native.manifold_reuse",
+                 T::Real,
+                 "0.02",
+                 0,
+                 0.5,
+                 {},
+                 "[fraction of the collision distance] a touching pair whose bodies moved less than this "
+                 "relative to each other since its last query is not queried again: its manifold is carried "
+                 "along by the motion (separations from the points' anchors on both bodies). 0: every solve "
+                 "queries and clips every touching pair (docs/native-narrowphase.md, \"Carried manifolds\")"});
     s.push_back({"native.touching",
                  T::Choice,
                  "protected",
@@ -113,6 +123,7 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.solver_tolerance")) n.solver_tolerance = settings.real("native.solver_tolerance");
     if (has("native.contact_substeps"))
         n.contact_substeps = static_cast<int>(settings.integer("native.contact_substeps"));
+    if (has("native.manifold_reuse")) n.manifold_reuse = settings.real("native.manifold_reuse");
     if (has("native.touching"))
         n.touching = settings.text("native.touching") == "speculative" ? TouchingRegime::Speculative
                      : settings.text("native.touching") == "soft"      ? TouchingRegime::Soft

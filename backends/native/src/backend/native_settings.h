@@ -38,6 +38,9 @@ struct NativeSettings {
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
     TouchingRegime touching = TouchingRegime::Protected;   ///< how touching islands are scheduled (speculative: experimental)
     bool warm_start = true;                 ///< contact phase starts from the previous impulses
+    /// [-] fraction of the collision distance: a touching pair whose bodies moved less than this
+    /// relative to each other since its last query keeps that manifold, carried along (0: query always)
+    double manifold_reuse = 0.02;
     int soft_substeps = 4;                  ///< soft regime: sub-steps per island tick
     double soft_hertz = 60.0;               ///< [Hz] soft regime: stiffness of the push-out
     int soft_iterations = 4;                ///< soft regime: relaxations with the push-out per sub-step

@@ -16,6 +16,7 @@ struct NativeStatistics {
     std::int64_t max_internal_steps_per_frame = 0;
     std::int64_t broad_phase_pairs = 0;      ///< summed over internal steps
     std::int64_t narrow_queries = 0;         ///< part-pair proximity queries
+    std::int64_t carried_manifolds = 0;      ///< touching part pairs carried by their anchors instead of queried
     std::int64_t walk_steps = 0;             ///< summed over queries
     std::int64_t max_walk_steps = 0;
     std::int64_t step_solves = 0;            ///< contact-phase solves, one per island solved
@@ -49,6 +50,7 @@ struct NativeStatistics {
         s["internal_steps_per_frame_max"] = static_cast<double>(max_internal_steps_per_frame);
         s["broadphase_pairs_mean"] = static_cast<double>(broad_phase_pairs) / steps;
         s["narrow_queries"] = static_cast<double>(narrow_queries);
+        s["carried_manifolds"] = static_cast<double>(carried_manifolds);
         s["walk_steps_mean"] = static_cast<double>(walk_steps) / queries;
         s["walk_steps_max"] = static_cast<double>(max_walk_steps);
         s["contact_solves"] = static_cast<double>(step_solves);

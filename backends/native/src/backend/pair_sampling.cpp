@@ -56,6 +56,7 @@ NativeBackend::PairState& NativeBackend::pairState(int a, int b) {
         const std::size_t n = shapes_[static_cast<std::size_t>(a)].parts.size() * shapes_[static_cast<std::size_t>(b)].parts.size();
         ps.caches.resize(n);
         ps.manifolds.resize(n);
+        ps.anchors.resize(n);
         pairs_.push_back(std::move(ps));
     }
     return pairs_[static_cast<std::size_t>(it->second)];
@@ -111,6 +112,7 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
             ticks_dirty_ = true;
         }
         for (PersistentManifold& m : ps.manifolds) m.clear();
+        for (ManifoldAnchor& m : ps.anchors) m.valid = false;
         eraseOrdered(candidates_, idx);
         eraseOrdered(body_pairs_[static_cast<std::size_t>(bp.a)], idx);
         eraseOrdered(body_pairs_[static_cast<std::size_t>(bp.b)], idx);
@@ -144,11 +146,60 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
     // body in flight keeps the exact schedule (the queue) and becomes a manifold at touching.
     const double t = valid_at_[static_cast<std::size_t>(ps.a)];
     const double window = reach > cd && heldAt(ps.a, t) && heldAt(ps.b, t) ? reach : cd;
+    // A compound pair skips part pairs whose balls are farther apart than the pair can close within
+    // a frame (a box in a drum of 30 slabs queries the two or three near it); their gap is the
+    // balls' gap, a lower bound.
+    const bool compound = sa.parts.size() * sb.parts.size() > 1;
+    const double far_gap = compound ? window + closingSpeed(ps, frame_dt_) * frame_dt_ : kNever;
     for (std::size_t i = 0; i < sa.parts.size(); ++i) {
         const Pose pa = fa * sa.parts[i].local;
         for (std::size_t j = 0; j < sb.parts.size(); ++j) {
             const Pose pb = fb * sb.parts[j].local;
             const std::size_t part_pair = i * sb.parts.size() + j;
+            ManifoldAnchor& anchor = ps.anchors[part_pair];
+            if (compound) {
+                const Vec3 ca = fa.apply(sa.parts[i].bound_center), cb = fb.apply(sb.parts[j].bound_center);
+                const double apart = (cb - ca).norm();
+                // The balls' gap, and each ball against the other part's own box (a box by a long slab).
+                double gap = apart - sa.parts[i].bound_radius - sb.parts[j].bound_radius;
+                if (!(gap > far_gap))
+                    gap = std::max({gap, sb.parts[j].gapToBall(pb, ca, sa.parts[i].bound_radius),
+                                    sa.parts[i].gapToBall(pa, cb, sb.parts[j].bound_radius)});
+                if (gap > far_gap) {
+                    out.parts.push_back({gap, Vec3((cb - ca) / apart), true});
+                    if (gap < out.distance) {
+                        out.distance = gap;
+                        out.normal = out.parts.back().normal;
+                    }
+                    anchor.valid = false;
+                    continue;
+                }
+            }
+            // A touching part pair whose bodies barely moved relative to each other since its last
+            // query keeps that manifold, carried along by the motion (manifold_anchor.h): a resting
+            // pile's pairs are not walked and clipped again at every solve.
+            if (anchor.valid && anchor.window == window && settings_.manifold_reuse > 0.0) {
+                const double radius_a = sa.parts[i].bound_center.norm() + sa.parts[i].bound_radius;
+                const double radius_b = sb.parts[j].bound_center.norm() + sb.parts[j].bound_radius;
+                ContactManifold m;
+                if (anchoredMotion(anchor, fa, fb, radius_a, radius_b) <= settings_.manifold_reuse * cd &&
+                    carryManifold(anchor, fa, fb, m)) {
+                    m.body_a = ps.a;
+                    m.body_b = ps.b;
+                    m.pair = pair_index;
+                    m.restitution = mat.restitution;
+                    m.friction = mat.friction;
+                    out.parts.push_back({m.distance, m.normal});
+                    if (m.distance < out.distance) {
+                        out.distance = m.distance;
+                        out.normal = m.normal;
+                    }
+                    out.manifolds.push_back(std::move(m));
+                    out.manifold_part.push_back(static_cast<int>(part_pair));
+                    ++out.carried;
+                    continue;
+                }
+            }
             FeatureCache& cache = ps.caches[part_pair];
             const ProximityResult r = queryParts(sa.parts[i], pa, sb.parts[j], pb, cache);
             ++out.queries;
@@ -160,6 +211,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
                 out.distance = r.distance;
                 out.normal = r.normal;
             }
+            anchor.valid = false;
             if (!(r.distance < window)) continue;
             ContactManifold m;
             m.body_a = ps.a;
@@ -171,6 +223,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
             setManifoldPoints(patch, r, cd, reach > cd, m);
             m.restitution = mat.restitution;
             m.friction = mat.friction;
+            anchorManifold(m, fa, fb, window, anchor);
             out.manifolds.push_back(std::move(m));
             out.manifold_part.push_back(static_cast<int>(part_pair));
         }
@@ -299,6 +352,7 @@ void NativeBackend::recycleSamples(std::vector<PairSample>& samples) {
 void NativeBackend::recordSamples(const std::vector<PairSample>& samples) {
     for (const PairSample& s : samples) {
         stats_.narrow_queries += s.queries;
+        stats_.carried_manifolds += s.carried;
         stats_.walk_steps += s.walk_steps;
         stats_.max_walk_steps = std::max<std::int64_t>(stats_.max_walk_steps, s.max_walk);
         if (s.not_converged > 0) warn("walk_not_converged", static_cast<std::uint64_t>(s.not_converged));
@@ -329,6 +383,8 @@ double NativeBackend::bouncingSphereRecheck(const PairSample& s, double t) const
 double NativeBackend::closeTime(const PairState& ps, std::size_t part_pair, const PartGap& g, double allowed,
                                 double floor, const MotionBound& ma, const MotionBound& mb, double t,
                                 double horizon) const {
+    // Two far part balls: no separating direction is known, so the direction-free bound.
+    if (g.bounded) return earliestCollisionTime(allowed, ma, mb, horizon);
     const double pair_time = earliestCollisionTime(allowed, g.normal, ma, mb, horizon);
     if (!(pair_time < horizon)) return pair_time;
     // A rotating body's far vertices start from their own gaps, and its held contact points approach

@@ -81,7 +81,8 @@ Vec3 edgeDirection(const ConvexMesh& m, const Pose& pose, int h) {
 /// arbitrary (e.g. horizontal for a box resting exactly on a floor), so it is not used then.
 bool touchingResult(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
                     const FeatureCache& near, ProximityResult& r) {
-    std::vector<Vec3> axes;
+    thread_local std::vector<Vec3> axes;   // per worker, keeps its capacity: no allocation once warm
+    axes.clear();
     featureNormals(a, pose_a, near.a, 1.0, axes);
     featureNormals(b, pose_b, near.b, -1.0, axes);
     if (near.a.type == FeatureType::Edge && near.b.type == FeatureType::Edge) {
