@@ -136,35 +136,6 @@ TEST(NarrowphaseManifoldAnchor, APartingOrSinkingPairIsLeftToAQuery) {
     EXPECT_NEAR(m.distance, 8e-4, 1e-12);
 }
 
-TEST(NarrowphaseManifoldAnchor, APairApartCarriesALowerBoundOnItsDistance) {
-    // A pair found apart keeps its distance less the motion bound (as samplePair carries it, with
-    // A's radius grown by the distance: B's nearest point lies that far from A's surface); over
-    // random motions of both bodies it never exceeds the distance a new query finds.
-    Resting s;
-    const Vec3 up = s.fa.rotate(Vec3::UnitZ());
-    const Pose fb0{s.fb.position + 0.02 * up, s.fb.orientation};   // 2 cm above the slab
-    FeatureCache cache;
-    const ProximityResult r0 = queryMeshMesh(s.a, s.fa, s.b, fb0, cache);
-    ASSERT_NEAR(r0.distance, 0.02 + 3e-4, 1e-12);
-    ManifoldAnchor anchor;
-    anchorApart(r0.distance, r0.normal, s.fa, fb0, 1e-3, anchor);
-    ASSERT_TRUE(anchor.apart());
-    double radius_a = 0.0, radius_b = 0.0;
-    for (int v = 0; v < s.a.vertexCount(); ++v) radius_a = std::max(radius_a, s.a.position(v).norm());
-    for (int v = 0; v < s.b.vertexCount(); ++v) radius_b = std::max(radius_b, s.b.position(v).norm());
-    std::mt19937 rng(5);
-    int tight = 0;
-    for (int trial = 0; trial < 300; ++trial) {
-        const Pose fa = s.fa * smallMotion(rng, 2e-3, 0.01), fb = fb0 * smallMotion(rng, 2e-3, 0.01);
-        const double lower = r0.distance - anchoredMotion(anchor, fa, fb, radius_a + r0.distance, radius_b);
-        FeatureCache c;
-        const double exact = queryMeshMesh(s.a, fa, s.b, fb, c).distance;
-        EXPECT_LE(lower, exact + 1e-12);
-        if (exact - lower < 0.5 * (r0.distance - lower)) ++tight;
-    }
-    EXPECT_GT(tight, 0);   // and not vacuous: some bounds are within half the motion of the truth
-}
-
 TEST(NarrowphaseManifoldAnchor, APartsBoxGapIsALowerBoundOnItsDistance) {
     // gapToBall (compound pairs skip far part pairs by it) against the narrow phase's distance
     // between the part and a sphere, at random poses.

@@ -91,7 +91,6 @@ private:
         std::vector<PartGap> parts;       ///< every part pair's gap and normal
         int queries = 0, walk_steps = 0, max_walk = 0, not_converged = 0;
         int carried = 0;   ///< manifolds carried from the last query instead of queried (manifold_anchor.h)
-        int carried_apart = 0;   ///< part pairs apart whose distance bound was carried instead of queried
         bool deferred = false;   ///< approaching impact moved to its refined touching time (deferImpacts)
         double contact_time = 0.0;   ///< [s] deferred: when it is resolved (the refined touching time)
         double reach = 0.0;          ///< [m] the patch reach the manifolds were built with (patchReach)

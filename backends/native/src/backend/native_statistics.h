@@ -17,7 +17,6 @@ struct NativeStatistics {
     std::int64_t broad_phase_pairs = 0;      ///< summed over internal steps
     std::int64_t narrow_queries = 0;         ///< part-pair proximity queries
     std::int64_t carried_manifolds = 0;      ///< touching part pairs carried by their anchors instead of queried
-    std::int64_t carried_apart = 0;          ///< part pairs apart whose distance bound was carried instead of queried
     std::int64_t walk_steps = 0;             ///< summed over queries
     std::int64_t max_walk_steps = 0;
     std::int64_t step_solves = 0;            ///< contact-phase solves, one per island solved
@@ -52,7 +51,6 @@ struct NativeStatistics {
         s["broadphase_pairs_mean"] = static_cast<double>(broad_phase_pairs) / steps;
         s["narrow_queries"] = static_cast<double>(narrow_queries);
         s["carried_manifolds"] = static_cast<double>(carried_manifolds);
-        s["carried_apart"] = static_cast<double>(carried_apart);
         s["walk_steps_mean"] = static_cast<double>(walk_steps) / queries;
         s["walk_steps_max"] = static_cast<double>(max_walk_steps);
         s["contact_solves"] = static_cast<double>(step_solves);

@@ -178,28 +178,11 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
             // A touching part pair whose bodies barely moved relative to each other since its last
             // query keeps that manifold, carried along by the motion (manifold_anchor.h): a resting
             // pile's pairs are not walked and clipped again at every solve.
-            // A part pair found apart whose bodies barely moved since keeps a lower bound on its
-            // distance instead (the queried one less the motion): a resting pile's neighbours that
-            // do not touch are not walked again at every tick either.
             if (anchor.valid && anchor.window == window && settings_.manifold_reuse > 0.0) {
                 const double radius_a = sa.parts[i].bound_center.norm() + sa.parts[i].bound_radius;
                 const double radius_b = sb.parts[j].bound_center.norm() + sb.parts[j].bound_radius;
-                if (anchor.apart()) {
-                    // B's point nearest A lies within the queried distance of A's surface.
-                    const double moved = anchoredMotion(anchor, fa, fb, radius_a + anchor.distance, radius_b);
-                    const double lower = anchor.distance - moved;
-                    if (moved <= settings_.manifold_reuse * cd && lower >= window) {
-                        out.parts.push_back({lower, fa.rotate(anchor.normal_a), true});
-                        if (lower < out.distance) {
-                            out.distance = lower;
-                            out.normal = out.parts.back().normal;
-                        }
-                        ++out.carried_apart;
-                        continue;
-                    }
-                }
                 ContactManifold m;
-                if (!anchor.apart() && anchoredMotion(anchor, fa, fb, radius_a, radius_b) <= settings_.manifold_reuse * cd &&
+                if (anchoredMotion(anchor, fa, fb, radius_a, radius_b) <= settings_.manifold_reuse * cd &&
                     carryManifold(anchor, fa, fb, m)) {
                     m.body_a = ps.a;
                     m.body_b = ps.b;
@@ -229,10 +212,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
                 out.normal = r.normal;
             }
             anchor.valid = false;
-            if (!(r.distance < window)) {
-                if (std::isfinite(r.distance)) anchorApart(r.distance, r.normal, fa, fb, window, anchor);
-                continue;
-            }
+            if (!(r.distance < window)) continue;
             ContactManifold m;
             m.body_a = ps.a;
             m.body_b = ps.b;
@@ -373,7 +353,6 @@ void NativeBackend::recordSamples(const std::vector<PairSample>& samples) {
     for (const PairSample& s : samples) {
         stats_.narrow_queries += s.queries;
         stats_.carried_manifolds += s.carried;
-        stats_.carried_apart += s.carried_apart;
         stats_.walk_steps += s.walk_steps;
         stats_.max_walk_steps = std::max<std::int64_t>(stats_.max_walk_steps, s.max_walk);
         if (s.not_converged > 0) warn("walk_not_converged", static_cast<std::uint64_t>(s.not_converged));

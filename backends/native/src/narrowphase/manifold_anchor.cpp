@@ -24,19 +24,6 @@ void anchorManifold(const ContactManifold& m, const Pose& fa, const Pose& fb, do
     for (double g : m.point_gap) out.gap.push_back(g);
 }
 
-void anchorApart(double distance, const Vec3& normal, const Pose& fa, const Pose& fb, double window,
-                 ManifoldAnchor& out) {
-    out.valid = true;
-    out.relative = fa.inverse() * fb;
-    out.window = window;
-    out.distance = distance;
-    out.normal_a = fa.orientation.conjugate() * normal;
-    out.centroid_a = Vec3::Zero();
-    out.on_a.clear();
-    out.on_b.clear();
-    out.gap.clear();
-}
-
 double anchoredMotion(const ManifoldAnchor& anchor, const Pose& fa, const Pose& fb, double radius_a, double radius_b) {
     // In A's frame the motion maps y to turn * y + (p_now - turn * p_then).
     const Pose now = fa.inverse() * fb;

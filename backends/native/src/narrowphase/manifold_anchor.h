@@ -21,16 +21,10 @@ struct ManifoldAnchor {
     PointArray<Vec3> on_a;         ///< each point in A's frame
     PointArray<Vec3> on_b;         ///< each point in B's frame
     PointArray<double> gap;        ///< per point (empty: every point at `distance`)
-    /// Anchored apart (no manifold): only the distance and normal of the query are kept.
-    bool apart() const { return on_a.empty(); }
 };
 
 /// Anchors `m` (queried at A's and B's scene frames `fa`, `fb`, within `window`) on both bodies.
 void anchorManifold(const ContactManifold& m, const Pose& fa, const Pose& fb, double window, ManifoldAnchor& out);
-
-/// Anchors a part pair the query found apart (at `distance` >= the window, along `normal`, world).
-void anchorApart(double distance, const Vec3& normal, const Pose& fa, const Pose& fb, double window,
-                 ManifoldAnchor& out);
 
 /// [m] Bound on how far B's material near the contact moved in A's frame since the anchor. The
 /// relative motion is a turn by θ and a shift; a point within `radius_a` of A's frame origin moved
