@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "vroc/bullet/bullet_backend.h"
+#include "vroc/core/backend_registry.h"
 #include "vroc/mujoco/mujoco_backend.h"
 #include "vroc/native/native_backend.h"
 #include "vroc/ode/ode_backend.h"
@@ -25,6 +26,13 @@ inline const std::vector<ConformanceBackend>& conformanceBackends() {
         {"mujoco", &mujoco::registerBackend},
     };
     return list;
+}
+
+/// Registers every backend above (once) and returns `name`'s registration.
+inline const BackendInfo& registeredBackend(const std::string& name) {
+    for (const ConformanceBackend& b : conformanceBackends())
+        if (!BackendRegistry::global().find(b.name)) b.register_fn();
+    return BackendRegistry::global().require(name);
 }
 
 }  // namespace vroc::conformance
