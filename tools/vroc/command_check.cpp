@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "footing_options.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/output_dir.h"
@@ -30,6 +31,7 @@ struct CheckArgs {
     std::vector<std::string> assignments;
     harness::CheckOptions options;
     PoolArgs pool;
+    FootingArgs footing;
     bool quiet = false;
 };
 
@@ -60,7 +62,7 @@ std::filesystem::path stressScenesDir(const std::string& option) {
 }
 
 int check(CheckArgs& a, const Context& context) {
-    const auto backends = harness::selectBackends(a.backends, a.assignments);
+    const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
     a.options.progress = !a.quiet;
     a.options.command_line = context.command_line;
     const bool stress = a.options.stress || std::any_of(a.options.only.begin(), a.options.only.end(), harness::isStressScenarioId);
@@ -99,6 +101,7 @@ Action setupCheck(CLI::App& sub, const Context& context) {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress bar (it is drawn only on a terminal anyway)");
     addPoolOptions(sub, a->pool);
+    addFootingOptions(sub, a->footing);
     sub.footer(
         "Prints the check x backend table; writes metrics.json and report.html.\n"
         "Stress rows are required for native (issue 22: a regression exits 1); rows marked info are reported, not "

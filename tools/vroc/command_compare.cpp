@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "footing_options.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
@@ -28,6 +29,7 @@ struct CompareArgs {
     harness::CompareOptions options;
     std::optional<double> dt;
     PoolArgs pool;
+    FootingArgs footing;
     bool quiet = false;
 };
 
@@ -35,7 +37,9 @@ int compare(CompareArgs& a, const Context& context) {
     if (!(a.options.duration > 0)) throw InputError("--duration: expected a positive number of seconds");
     if (a.dt && !(*a.dt > 0)) throw InputError("--dt: expected a positive number of seconds");
     if (!(a.options.window > 0) || a.options.windows < 1) throw InputError("--window/--windows: expected positive values");
-    const auto backends = harness::selectBackends(a.backends, a.assignments);
+    const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
+    if (!a.quiet && harness::mpi::isRoot() && backends.front().footing.kind == harness::Footing::Kind::Equal)
+        std::fprintf(stderr, "vroc compare: footing %s\n", harness::footingText(backends.front().footing).c_str());
     const Scene scene = loadScene(a.scene_file);
     a.options.frame_dt = a.dt;
     a.options.progress = !a.quiet;
@@ -65,6 +69,7 @@ Action setupCompare(CLI::App& sub, const Context& context) {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress bar (it is drawn only on a terminal anyway)");
     addPoolOptions(sub, a->pool);
+    addFootingOptions(sub, a->footing);
     sub.footer("Writes metrics.json, <backend>/{trajectory,events,step_times}.csv and report.html.");
     return [a, context] { return compare(*a, context); };
 }

@@ -10,6 +10,7 @@
 
 #include "command.h"
 #include "frame_steps.h"
+#include "footing_options.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
@@ -30,11 +31,14 @@ struct EnsembleArgs {
     std::vector<std::string> assignments;
     harness::EnsembleOptions options;
     PoolArgs pool;
+    FootingArgs footing;
     bool quiet = false;
 };
 
 int ensemble(EnsembleArgs& a, const Context& context) {
-    const auto backends = harness::selectBackends(a.backends, a.assignments);
+    const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
+    if (!a.quiet && harness::mpi::isRoot() && backends.front().footing.kind == harness::Footing::Kind::Equal)
+        std::fprintf(stderr, "vroc ensemble: footing %s\n", harness::footingText(backends.front().footing).c_str());
     if (!a.perturb.empty()) a.options.perturb = harness::parsePerturbation(a.perturb);
     if (!a.dt.empty()) a.options.frame_dt = parseFrameStep(a.dt);
     if (a.options.permutations != 0 && a.options.permutations < 99)
@@ -79,6 +83,7 @@ Action setupEnsemble(CLI::App& sub, const Context& context) {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress bar");
     addPoolOptions(sub, a->pool);
+    addFootingOptions(sub, a->footing);
     sub.footer("Prints, per backend pair, the observables that distinguish them; writes metrics.json, report.html\n"
                "and each finished member to runs/. Runs in parallel (--jobs) and over MPI ranks (mpirun -n R vroc ensemble ...).");
     return [a, context] { return ensemble(*a, context); };

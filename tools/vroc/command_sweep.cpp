@@ -10,6 +10,7 @@
 
 #include "command.h"
 #include "frame_steps.h"
+#include "footing_options.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/output_dir.h"
@@ -32,11 +33,14 @@ struct SweepArgs {
     std::vector<std::string> assignments;
     harness::SweepOptions options;
     PoolArgs pool;
+    FootingArgs footing;
     bool quiet = false;
 };
 
 int sweep(SweepArgs& a, const Context& context) {
-    const auto backends = harness::selectBackends(a.backends, a.assignments);
+    const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
+    if (!a.quiet && harness::mpi::isRoot() && backends.front().footing.kind == harness::Footing::Kind::Equal)
+        std::fprintf(stderr, "vroc sweep: footing %s\n", harness::footingText(backends.front().footing).c_str());
     if (!a.dts.empty()) a.options.dts = parseFrameSteps(a.dts);
     if (!a.details.empty()) a.options.details = harness::parseDetailLevels(a.details);
     if (a.target && !(*a.target > 0)) throw InputError("--target: expected a positive error in metres");
@@ -85,6 +89,7 @@ Action setupSweep(CLI::App& sub, const Context& context) {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     sub.add_flag("--quiet,-q", a->quiet, "No progress bar (it is drawn only on a terminal anyway)");
     addPoolOptions(sub, a->pool);
+    addFootingOptions(sub, a->footing);
     sub.footer("Writes metrics.json and report.html (speed-accuracy chart with the Pareto front, robustness limit), and each\nfinished run to runs/ as it completes. Runs in parallel (--jobs) and over MPI ranks (mpirun -n R vroc sweep ...).");
     return [a, context] { return sweep(*a, context); };
 }

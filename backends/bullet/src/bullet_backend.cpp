@@ -77,6 +77,10 @@ void BulletBackend::configureSolver() {
     info.m_splitImpulse = config_.split_impulse ? 1 : 0;
     info.m_restitutionVelocityThreshold = config_.restitution_threshold;
     info.m_warmstartingFactor = config_.warmstarting_factor;
+    // Bullet 3.24's default mode (SOLVER_USE_WARMSTARTING | SOLVER_SIMD, btContactSolverInfo.h) puts
+    // one friction row per point along the sliding velocity; the flag adds a second row along
+    // dir1 x normal (btSequentialImpulseConstraintSolver::convertContact), each clamped to mu N.
+    if (config_.friction_directions == 2) info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 }
 
 void BulletBackend::addBody(int index, const Body& body) {
@@ -113,10 +117,11 @@ void BulletBackend::addBody(int index, const Body& body) {
         rigid.setInterpolationLinearVelocity(rigid.getLinearVelocity());
         rigid.setInterpolationAngularVelocity(rigid.getAngularVelocity());
         if (config_.ccd) {
-            // Swept-sphere CCD when a step moves the COM further than the inner radius.
+            // Swept-sphere CCD when a step moves the COM further than the inner radius; the swept
+            // sphere (bullet.ccd_radius of the inner radius) stays inside the shape.
             const double r = innerRadius(body.shape);
             rigid.setCcdMotionThreshold(r);
-            rigid.setCcdSweptSphereRadius(0.5 * r);
+            rigid.setCcdSweptSphereRadius(config_.ccd_radius * r);
             ++ccd_bodies_;
         }
     }

@@ -23,6 +23,11 @@ std::vector<SettingSpec> bulletSettingSpecs() {
          "[m/s] approach speed below which Bullet zeroes restitution (Bullet default 0.2)"},
         {"bullet.warmstarting_factor", T::Real, "0.85", 0.0, 1.0, {},
          "[-] fraction of the previous step's contact impulse the solver starts from (Bullet 0.85)"},
+        {"bullet.friction_directions", T::Integer, "1", 1, 2, {},
+         "friction rows per contact point: 1 = Bullet 3.24's default, one row along the slip; 2 = "
+         "SOLVER_USE_2_FRICTION_DIRECTIONS, a second row across it"},
+        {"bullet.ccd_radius", T::Real, "0.5", 0.01, 1.0, {},
+         "[-] CCD swept-sphere radius as a fraction of the body's inner radius (Bullet has no default: CCD is off)"},
     };
 }
 
@@ -36,6 +41,8 @@ BulletConfig BulletConfig::from(const Settings& s) {
     c.split_impulse = s.boolean("bullet.split_impulse");
     c.restitution_threshold = s.real("bullet.restitution_threshold");
     c.warmstarting_factor = s.real("bullet.warmstarting_factor");
+    c.friction_directions = static_cast<int>(s.integer("bullet.friction_directions"));
+    c.ccd_radius = s.real("bullet.ccd_radius");
     return c;
 }
 

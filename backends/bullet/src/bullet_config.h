@@ -18,6 +18,12 @@ struct BulletConfig {
     bool split_impulse = true;               ///< Bullet's split-impulse position correction
     double restitution_threshold = 0.2;      ///< [m/s] below this approach speed restitution is 0
     double warmstarting_factor = 0.85;       ///< [-] fraction of last step's impulse reused
+    /// Friction rows per contact point: 1 (Bullet 3.24's default solver mode: one row along the
+    /// sliding velocity) or 2 (SOLVER_USE_2_FRICTION_DIRECTIONS: a second row along dir1 x normal).
+    int friction_directions = 1;
+    /// [-] swept-sphere radius of continuous collision as a fraction of the body's inner radius
+    /// (innerRadius(): the sphere fits inside the shape); Bullet has no default (CCD off).
+    double ccd_radius = 0.5;
 
     static BulletConfig from(const Settings& settings);
 };

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "box_depth_bound.h"
+#include "friction_damping.h"
 #include "principal_frame.h"
 
 namespace vroc::mujoco {
@@ -61,7 +63,7 @@ std::vector<Part> partsOf(const Shape& shape) {
 // counted as mujoco.contact_full). Room grows with the virtual geoms: 8 contacts each (a box on a
 // box has up to 8) and 4 rows per contact (pyramidal cone, condim 3). Rows are dear in 2.2
 // (njmax x njmax and njmax x nv arrays), so njmax stops where those arrays reach 256 MB.
-std::string sizeElement(const Scene& scene) {
+std::string sizeElement(const Scene& scene, bool count_corrections) {
     long geoms = 0, dofs = 0;
     for (const Body& b : scene.bodies) {
         if (b.isStatic()) continue;
@@ -76,8 +78,9 @@ std::string sizeElement(const Scene& scene) {
     // Scratch stack [mjtNums]: MuJoCo's own guess overflows for thousands of bodies ("engine error:
     // Stack overflow" at compile time); room for arrays linear in the dofs and rows.
     const long nstack = 1000000 + 2000 * (dofs + njmax);
+    // One userdata slot: the passive callback's count of corrected contacts.
     return "  <size" + attr("nconmax", std::to_string(nconmax)) + attr("njmax", std::to_string(njmax)) +
-           attr("nstack", std::to_string(nstack)) + "/>\n";
+           attr("nstack", std::to_string(nstack)) + (count_corrections ? attr("nuserdata", "1") : "") + "/>\n";
 }
 
 // With tracked bodies present, <statistic meaninertia>: the sum of the virtual bodies' diagonal
@@ -101,18 +104,32 @@ std::string statisticElement(const Scene& scene) {
     return "  <statistic" + attr("meaninertia", num(meaninertia)) + "/>\n";
 }
 
+// What the passive callback does (passive_callback.h), as <numeric>s; none for MuJoCo's own model.
+std::string customElement(const SolverOptions& o) {
+    std::string numerics;
+    if (o.box_depth_bound) numerics += "    <numeric" + attr("name", kBoxDepthBoundName) + attr("data", "1") + "/>\n";
+    if (o.friction_damping > 0.0)
+        numerics +=
+            "    <numeric" + attr("name", kFrictionDampingName) + attr("data", num(o.friction_damping)) + "/>\n";
+    return numerics.empty() ? "" : "  <custom>\n" + numerics + "  </custom>\n";
+}
+
 class Writer {
 public:
     Writer(const Scene& scene, const ContactMaterials& materials) : scene_(scene), materials_(materials) {}
 
-    std::string write(double timestep) {
+    std::string write(const SolverOptions& o) {
         for (std::size_t i = 0; i < scene_.bodies.size(); ++i) body(static_cast<int>(i));
         pairs();
         std::ostringstream out;
         out << "<mujoco model=\"vroc\">\n"
             << "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n"
-            << "  <option" << attr("timestep", num(timestep)) << attr("gravity", vec(scene_.gravity)) << "/>\n"
-            << sizeElement(scene_)
+            << "  <option" << attr("timestep", num(o.timestep)) << attr("gravity", vec(scene_.gravity))
+            << attr("cone", o.cone) << attr("impratio", num(o.impratio))
+            << attr("noslip_iterations", std::to_string(o.noslip_iterations)) << attr("integrator", o.integrator)
+            << "/>\n"
+            << customElement(o)
+            << sizeElement(scene_, o.box_depth_bound)
             << statisticElement(scene_)
             << "  <asset>\n" << assets_.str() << "  </asset>\n"
             << "  <worldbody>\n" << world_.str() << "  </worldbody>\n"
@@ -217,8 +234,8 @@ TrackedInertia trackedInertia(const Scene& scene, const Body& body) {
 std::string bodyName(int body) { return "b" + std::to_string(body); }
 std::string geomName(int body, int part) { return "g" + std::to_string(body) + "_" + std::to_string(part); }
 
-std::string writeMjcf(const Scene& scene, const ContactMaterials& materials, double timestep) {
-    return Writer(scene, materials).write(timestep);
+std::string writeMjcf(const Scene& scene, const ContactMaterials& materials, const SolverOptions& options) {
+    return Writer(scene, materials).write(options);
 }
 
 }  // namespace vroc::mujoco

@@ -15,7 +15,8 @@
 //  - margin = gap = the scene's collision distance: contacts that close are listed (for events)
 //    but never enter the solver;
 //  - with tracked bodies, <statistic meaninertia> of the virtual bodies alone (the solver's scale);
-//  - <size nconmax njmax> grown with the virtual geoms (MuJoCo 2.2's default is 100 contacts).
+//  - <size nconmax njmax> grown with the virtual geoms (MuJoCo 2.2's default is 100 contacts);
+//  - <option>: timestep, gravity and the solver settings (SolverOptions), always written out.
 // Names: body i is "b<i>", part k of body i is geom "g<i>_<k>" (mesh "m<i>_<k>").
 #pragma once
 
@@ -36,9 +37,24 @@ struct TrackedInertia {
 constexpr double kTrackedMassRatio = 1e6;
 TrackedInertia trackedInertia(const Scene& scene, const Body& body);
 
-/// MJCF for `scene` with option timestep `timestep` [s] (the backend sets the timestep per frame).
-/// Doubles are written with 17 significant digits, so they read back bit for bit.
-std::string writeMjcf(const Scene& scene, const ContactMaterials& materials, double timestep);
+/// The <option> element's step and solver settings, in MJCF's words; the defaults are MuJoCo's.
+struct SolverOptions {
+    double timestep = 0.002;            ///< [s] (the backend sets the timestep per frame)
+    std::string cone = "pyramidal";     ///< "pyramidal" or "elliptic"
+    double impratio = 1.0;              ///< [-] friction-to-normal impedance ratio
+    int noslip_iterations = 0;          ///< noslip post-solver iterations (0: off)
+    std::string integrator = "Euler";   ///< "Euler", "RK4" or "implicit"
+    /// [1/s] elliptic cone only: the friction rows' damping (direct solref form), written as the
+    /// <numeric> friction_damping.h reads (0: not written, the friction rows keep the pair's damping)
+    double friction_damping = 0.0;
+    /// Phantom box-box contacts clamped to the boxes' overlap (box_depth_bound.h), written as a
+    /// <numeric> with one mjData::userdata slot for the count (false: MuJoCo's contacts as they are)
+    bool box_depth_bound = false;
+};
+
+/// MJCF for `scene` with `options` in its <option> element. Doubles are written with 17
+/// significant digits, so they read back bit for bit.
+std::string writeMjcf(const Scene& scene, const ContactMaterials& materials, const SolverOptions& options);
 
 std::string bodyName(int body);
 std::string geomName(int body, int part);

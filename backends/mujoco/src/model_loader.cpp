@@ -3,6 +3,7 @@
 
 #include <cstring>
 
+#include "passive_callback.h"
 #include "vroc/core/errors.h"
 
 namespace vroc::mujoco {
@@ -16,6 +17,7 @@ void ignoreWarning(const char*) {}
 void installMessageHandlers() {
     mju_user_error = &throwError;
     mju_user_warning = &ignoreWarning;
+    installPassiveCallback();
 }
 
 ModelPtr loadModel(const std::string& xml, const std::string& scene_name) {

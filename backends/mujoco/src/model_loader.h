@@ -21,7 +21,7 @@ struct DataDeleter {
 using ModelPtr = std::unique_ptr<mjModel, ModelDeleter>;
 using DataPtr = std::unique_ptr<mjData, DataDeleter>;
 
-/// Installs the handlers described above (idempotent).
+/// Installs the handlers described above and the passive callback (passive_callback.h); idempotent.
 void installMessageHandlers();
 
 /// Compiles `xml`. Throws InputError "mujoco: scene '<name>': MuJoCo refused the model: <MuJoCo's text>".

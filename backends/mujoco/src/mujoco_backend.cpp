@@ -8,6 +8,7 @@
 #include "contact_materials.h"
 #include "mjcf_writer.h"
 #include "principal_frame.h"
+#include "restitution_mapping.h"
 #include "vroc/core/body_motion_checks.h"
 #include "vroc/core/errors.h"
 
@@ -19,6 +20,21 @@ namespace {
 long stepsFor(double dt, double timestep) {
     const double q = dt / timestep;
     return std::max(1L, static_cast<long>(std::ceil(q - 1e-9)));
+}
+
+// Internal steps for a frame of dt: mujoco.substeps if set, else from mujoco.timestep.
+long stepsFor(double dt, const MujocoConfig& config) {
+    return config.substeps > 0 ? config.substeps : stepsFor(dt, config.timestep);
+}
+
+// With fixed sub-steps the configuration is remade for the scene's frame: the restitution mapping
+// for the step dt / substeps, the contact spring no faster than 2 steps (MuJoCo's rule).
+MujocoConfig forFrame(const MujocoConfig& config, double frame_dt) {
+    if (config.substeps <= 0) return config;
+    MujocoConfig c = config;
+    c.timestep = frame_dt / static_cast<double>(config.substeps);
+    c.contact_timeconst = std::max(config.contact_timeconst, 2.0 * c.timestep);
+    return c;
 }
 
 // Everything the MJCF and the body records rely on, checked before MuJoCo sees anything.
@@ -59,11 +75,39 @@ void validate(const Scene& scene, const MujocoConfig& config) {
     }
 }
 
-ModelPtr compile(const Scene& scene, const MujocoConfig& config) {
+// The settings' words in MJCF's: the integrator keywords are MuJoCo 2.2's ("Euler", "RK4",
+// "implicit": the integrator map of its XML reader), the cone keywords are the settings' own.
+// The settings machinery admits only these words; a MujocoConfig built by hand is checked too.
+SolverOptions solverOptions(const MujocoConfig& config, double timestep) {
+    SolverOptions o;
+    o.timestep = timestep;
+    if (config.cone != "pyramidal" && config.cone != "elliptic")
+        throw InputError("mujoco: mujoco.cone: expected pyramidal or elliptic, got '" + config.cone + "'");
+    o.cone = config.cone;
+    // Elliptic cone with the restitution mapping: the friction rows get the damping of a perfectly
+    // inelastic pair whatever the pair's e (friction_damping.h says why).
+    if (config.cone == "elliptic" && config.restitution == "solref")
+        o.friction_damping = contactSpring(0.0, config.contact_timeconst, config.timestep).damping;
+    o.impratio = config.impratio;
+    o.noslip_iterations = config.noslip_iterations;
+    o.box_depth_bound = config.bound_box_depth;
+    if (config.integrator == "euler")
+        o.integrator = "Euler";
+    else if (config.integrator == "rk4")
+        o.integrator = "RK4";
+    else if (config.integrator == "implicit")
+        o.integrator = "implicit";
+    else
+        throw InputError("mujoco: mujoco.integrator: expected euler, rk4 or implicit, got '" + config.integrator + "'");
+    return o;
+}
+
+ModelPtr compile(const Scene& scene, const MujocoConfig& given) {
+    const MujocoConfig config = forFrame(given, scene.frame_dt);
     validate(scene, config);
     const ContactMaterials materials(scene, config.contact_timeconst, config.timestep, config.restitution == "solref");
     const double h = scene.frame_dt / static_cast<double>(stepsFor(scene.frame_dt, config.timestep));
-    return loadModel(writeMjcf(scene, materials, h), scene.name);
+    return loadModel(writeMjcf(scene, materials, solverOptions(config, h)), scene.name);
 }
 
 DataPtr makeData(const mjModel& m) {
@@ -155,7 +199,7 @@ MujocoBackend::MujocoBackend(const Scene& scene, const MujocoConfig& config)
 void MujocoBackend::stepFrame(double dt) {
     if (!(dt > 0.0) || !std::isfinite(dt))
         throw InputError("mujoco: frame dt must be a positive finite number, got " + std::to_string(dt));
-    long n = stepsFor(dt, config_.timestep);
+    long n = stepsFor(dt, config_);
     if (n > config_.max_substeps) {
         n = config_.max_substeps;
         ++step_cap_;
@@ -209,6 +253,10 @@ void MujocoBackend::mujocoStep(double h, double end_time) {
             last_ncon_ = data_->ncon;
             last_nefc_ = data_->nefc;
             solver_iterations_ += static_cast<std::uint64_t>(data_->solver_iter);
+            if (model_->nuserdata > 0) {   // the passive callback's corrections in this step
+                phantom_contacts_ += static_cast<std::uint64_t>(data_->userdata[0]);
+                data_->userdata[0] = 0;
+            }
             return;
         }
         const int put_back = guard_.recover(*model_, *data_, attempt > 0);
@@ -401,6 +449,7 @@ Statistics MujocoBackend::statistics() const {
         {"mujoco.nconmax", static_cast<double>(model_->nconmax)},
         {"mujoco.njmax", static_cast<double>(model_->njmax)},
         {"mujoco.nstack", static_cast<double>(model_->nstack)},
+        {"mujoco.phantom_contacts", static_cast<double>(phantom_contacts_)},
     };
 }
 

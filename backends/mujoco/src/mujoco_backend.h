@@ -71,6 +71,7 @@ private:
     std::uint64_t frames_ = 0, internal_steps_ = 0, nonfinite_ = 0, step_cap_ = 0, solver_iterations_ = 0;
     int last_ncon_ = 0, last_nefc_ = 0;
     std::uint64_t buffer_growths_ = 0;   ///< steps taken again with larger buffers (growBuffers)
+    std::uint64_t phantom_contacts_ = 0; ///< box-box contacts clamped (mujoco.bound_box_depth; per evaluation)
 };
 
 }  // namespace vroc::mujoco

@@ -2,6 +2,8 @@
 #include <mujoco/mujoco.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mujoco_backend.h"
 #include "mujoco_config.h"
@@ -39,10 +41,21 @@ BackendCapabilities capabilities() {
         "and qvel set from the tracker after every step: contacts see its velocity (a mocap body's they would not), "
         "a struck body recoils as from that mass (relative error ~1e-6) through the soft contact of the "
         "restitution note";
+    c.notes["friction"] =
+        "MuJoCo's default pyramidal cone (4 edges): mu along the contact frame's tangents, mu / sqrt2 along their "
+        "diagonals (a box slid along the diagonal goes sqrt2 as far); --set mujoco.cone=elliptic gives Coulomb's "
+        "circular cone (heading kept, stop distance within 0.3 % of v^2 / (2 mu g))";
     c.notes["hull"] =
         "the hull is exact (a MuJoCo mesh of its vertices, stored as floats), but MuJoCo 2.2 gives one contact "
         "point per mesh pair (MPR): a hull resting on a face rocks and sinks up to ~0.5 mm";
     return c;
+}
+
+// Equal footing: `substeps` internal steps a frame (mujoco.substeps: the restitution mapping made for
+// that step, the contact spring no faster than two of them) and Coulomb's circular cone
+// (mujoco.cone=elliptic: a diagonal slide keeps its heading and its Coulomb distance).
+std::vector<std::pair<std::string, std::string>> equalFooting(int substeps) {
+    return {{"mujoco.substeps", std::to_string(substeps)}, {"mujoco.cone", "elliptic"}};
 }
 
 }  // namespace
@@ -51,7 +64,8 @@ void registerBackend() {
     if (BackendRegistry::global().find("mujoco")) return;   // calling twice is harmless
     BackendInfo info;
     info.name = "mujoco";
-    info.description = "reference: MuJoCo 2.2 soft-contact solver (Newton, pyramidal cone, Euler), double precision";
+    info.description =
+        "reference: MuJoCo 2.2 soft-contact solver (Newton, pyramidal cone, Euler by default), double precision";
     info.version = std::string("MuJoCo ") + mj_versionString() + " (double)";
     info.capabilities = capabilities();
     info.deviations = {
@@ -72,9 +86,16 @@ void registerBackend() {
         "a step that overflows one is taken again with it doubled (rows up to 1 GB of arrays; mujoco.buffer_growths)",
         "solver scale in scenes with tracked bodies: <statistic meaninertia> of the virtual bodies alone, so the "
         "tracked bodies' 1e6 masses (see the tracked note) do not loosen the solver's tolerance",
+        "elliptic cone only (mujoco.cone=elliptic with mujoco.restitution=solref): the friction rows' damping is the "
+        "one the restitution mapping gives e = 0, whatever the pair's e (MuJoCo 2.2 damps friction with the "
+        "contact's solref, so the mapping would weaken friction as e grows and remove it at e = 1)",
+        "box-box contacts deeper than the two boxes' overlap along their normal are clamped to it, only with "
+        "mujoco.bound_box_depth=true (off by default): MuJoCo 2.2's box-box collider returns phantom contacts about a "
+        "box width deep for boxes resting face to face (upstream issue #3476), which throw stacks apart",
     };
     info.settings = mujocoSettingSpecs();
     info.create = &create;
+    info.equal_footing = &equalFooting;
     BackendRegistry::global().add(std::move(info));
 }
 

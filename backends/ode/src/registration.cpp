@@ -40,6 +40,13 @@ BackendCapabilities capabilities() {
     return c;
 }
 
+// Equal footing: `substeps` world steps a frame, and the first friction axis along the slip
+// (ode.friction_axes=sliding) so that the two-row friction pyramid turns with the motion: a
+// diagonal slide keeps its heading and its Coulomb distance (docs/ode-backend.md).
+std::vector<std::pair<std::string, std::string>> equalFooting(int substeps) {
+    return {{"ode.substeps", std::to_string(substeps)}, {"ode.friction_axes", "sliding"}};
+}
+
 }  // namespace
 
 void registerBackend() {
@@ -64,6 +71,7 @@ void registerBackend() {
     };
     info.settings = odeSettingSpecs();
     info.create = &create;
+    info.equal_footing = &equalFooting;
     BackendRegistry::global().add(std::move(info));
 }
 

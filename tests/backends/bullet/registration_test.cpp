@@ -20,7 +20,7 @@ TEST(BulletRegistration, RegistersOnceWithVersionAndSettings) {
     EXPECT_EQ(info->version, "Bullet 3.24 (double)");
     for (const char* key : {"bullet.substeps", "bullet.solver_iterations", "bullet.ccd", "bullet.margin",
                             "bullet.shrink_hulls", "bullet.split_impulse", "bullet.restitution_threshold",
-                            "bullet.warmstarting_factor"}) {
+                            "bullet.warmstarting_factor", "bullet.friction_directions", "bullet.ccd_radius"}) {
         bool found = false;
         for (const auto& spec : info->settings) found |= spec.key == key && !spec.help.empty();
         EXPECT_TRUE(found) << key;

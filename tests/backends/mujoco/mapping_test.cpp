@@ -70,7 +70,9 @@ Scene smallScene() {
 TEST(MujocoMjcf, MassesInertiasAndMaterialsSurviveCompilation) {
     const Scene scene = smallScene();
     const mujoco::ContactMaterials materials(scene, 0.008, 0.002, true);
-    const std::string xml = mujoco::writeMjcf(scene, materials, scene.frame_dt / 9);
+    mujoco::SolverOptions options;   // MuJoCo's defaults
+    options.timestep = scene.frame_dt / 9;
+    const std::string xml = mujoco::writeMjcf(scene, materials, options);
     std::printf("%s", xml.c_str());
     const mujoco::ModelPtr model = mujoco::loadModel(xml, scene.name);
     const mjModel& m = *model;

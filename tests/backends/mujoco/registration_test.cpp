@@ -19,7 +19,9 @@ TEST(MujocoRegistration, RegistersOnceWithVersionCapabilitiesAndSettings) {
     const BackendInfo* info = BackendRegistry::global().find("mujoco");
     ASSERT_NE(info, nullptr);
     EXPECT_EQ(info->version, "MuJoCo 2.2.2 (double)");
-    for (const char* key : {"mujoco.timestep", "mujoco.contact_timeconst", "mujoco.restitution", "mujoco.max_substeps"}) {
+    for (const char* key : {"mujoco.timestep", "mujoco.contact_timeconst", "mujoco.restitution", "mujoco.max_substeps",
+                            "mujoco.cone", "mujoco.impratio", "mujoco.noslip_iterations", "mujoco.integrator",
+                            "mujoco.bound_box_depth"}) {
         bool found = false;
         for (const auto& spec : info->settings) found |= spec.key == key && !spec.help.empty();
         EXPECT_TRUE(found) << key;
@@ -35,7 +37,8 @@ TEST(MujocoRegistration, RegistersOnceWithVersionCapabilitiesAndSettings) {
     EXPECT_EQ(c.compound, Support::Exact);
     EXPECT_EQ(c.restitution, Support::Approximated);
     EXPECT_FALSE(c.notes.at("restitution").empty());
-    EXPECT_EQ(c.friction, FrictionModel::Pyramid);
+    EXPECT_EQ(c.friction, FrictionModel::Pyramid);   // the default cone; the note names the elliptic one
+    EXPECT_NE(c.notes.at("friction").find("mujoco.cone=elliptic"), std::string::npos);
     EXPECT_FALSE(c.continuous_collision);
     EXPECT_TRUE(c.deterministic);
     EXPECT_EQ(c.precision, "double");

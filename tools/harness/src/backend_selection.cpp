@@ -11,7 +11,22 @@
 
 namespace vroc::harness {
 
-std::vector<SelectedBackend> selectBackends(const std::string& list, const std::vector<std::string>& assignments) {
+Footing::Kind footingKind(const std::string& word) {
+    if (word == "defaults") return Footing::Kind::Defaults;
+    if (word == "equal") return Footing::Kind::Equal;
+    throw InputError("--footing: '" + word + "' is not a footing (expected defaults or equal)");
+}
+
+std::string footingText(const Footing& footing) {
+    if (footing.kind == Footing::Kind::Defaults) return "defaults (each engine at its own defaults, departures listed)";
+    return "equal (" + std::to_string(footing.substeps) +
+           " internal steps per frame on every engine, isotropic Coulomb friction where the engine has it)";
+}
+
+std::vector<SelectedBackend> selectBackends(const std::string& list, const std::vector<std::string>& assignments,
+                                            const Footing& footing) {
+    if (footing.kind == Footing::Kind::Equal && footing.substeps < 1)
+        throw InputError("--footing-substeps: " + std::to_string(footing.substeps) + " (expected 1 or more)");
     const BackendRegistry& registry = BackendRegistry::global();
     std::vector<std::string> names;
     if (list.empty()) {
@@ -31,7 +46,9 @@ std::vector<SelectedBackend> selectBackends(const std::string& list, const std::
     std::vector<std::vector<std::pair<std::string, std::string>>> overrides(names.size());
     for (const std::string& name : names) {
         if (!seen.insert(name).second) throw InputError("--backends: '" + name + "' given twice");
-        out.push_back({&registry.require(name), {}});
+        SelectedBackend b;
+        b.info = &registry.require(name);
+        out.push_back(std::move(b));
     }
     for (const std::string& a : assignments) {
         auto kv = splitAssignment(a);
@@ -42,15 +59,31 @@ std::vector<SelectedBackend> selectBackends(const std::string& list, const std::
         if (!routed && !registry.find(prefix))
             throw InputError("--set " + a + ": the key must start with a backend name and '.', e.g. bullet.substeps");
     }
-    for (std::size_t i = 0; i < out.size(); ++i) out[i].settings = resolveSettings(out[i].info->settings, overrides[i]);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        SelectedBackend& b = out[i];
+        b.footing = footing;
+        if (footing.kind == Footing::Kind::Equal && b.info->equal_footing != nullptr)
+            b.footing_settings = b.info->equal_footing(footing.substeps);
+        // The footing's keys first, then the user's: a later override of the same key wins.
+        std::vector<std::pair<std::string, std::string>> all = b.footing_settings;
+        all.insert(all.end(), overrides[i].begin(), overrides[i].end());
+        b.settings = resolveSettings(b.info->settings, all);
+    }
     return out;
 }
 
 Json backendsJson(const std::vector<SelectedBackend>& backends) {
     Json out = Json::array();
     for (const SelectedBackend& b : backends)
+    {
+        Json applied = Json::object();
+        for (const auto& [key, value] : b.footing_settings) applied[key] = value;
         out.push_back({{"name", b.info->name}, {"version", b.info->version}, {"description", b.info->description},
-                       {"settings", b.settings.values()}, {"deviations", b.info->deviations}});
+                       {"settings", b.settings.values()}, {"deviations", b.info->deviations},
+                       {"footing", {{"kind", b.footing.kind == Footing::Kind::Equal ? "equal" : "defaults"},
+                                    {"substeps_per_frame", b.footing.kind == Footing::Kind::Equal ? Json(b.footing.substeps) : Json()},
+                                    {"settings", applied}}}});
+    }
     return out;
 }
 

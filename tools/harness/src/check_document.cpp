@@ -94,7 +94,7 @@ Json checkDocument(const CheckSuiteResult& r, const std::string& command_line) {
 }
 
 std::string checkTableText(const CheckSuiteResult& r) {
-    std::string out;
+    std::string out = "footing: " + (r.backends.empty() ? std::string("defaults") : footingText(r.backends.front().footing)) + "\n";
     char line[512];
     int width = 36;   // the check column: the longest id (stress ids are longer)
     for (const CheckRow& row : r.rows) width = std::max(width, static_cast<int>(row.metric.id.size()));

@@ -71,13 +71,26 @@ std::string settingsHtml(const Json& doc) {
     h << "<h3>Settings, versions and build</h3>\n";
     if (doc.contains("scene")) h << "<p>Scene: <code>" << htmlEscaped(doc["scene"].dump()) << "</code></p>\n";
     if (doc.contains("backends")) {
-        h << "<table><tr><th>backend</th><th>version</th><th>settings</th></tr>\n";
+        // The footing the engines ran on (the same for all of them), and per engine what it set.
+        const Json first = doc["backends"].empty() ? Json::object() : doc["backends"][0];
+        const Json footing = first.value("footing", Json::object());
+        if (footing.value("kind", "") == "equal")
+            h << "<p><b>Footing: equal</b>: " << cellText(footing.value("substeps_per_frame", Json()))
+              << " internal steps per frame on every engine, isotropic Coulomb friction where the engine has it "
+                 "(the footing's settings per engine below; a --set of the same key wins).</p>\n";
+        else
+            h << "<p><b>Footing: defaults</b>: each engine at its own defaults; every departure is listed as a "
+                 "deviation.</p>\n";
+        h << "<table><tr><th>backend</th><th>version</th><th>footing sets</th><th>settings</th></tr>\n";
         for (const Json& b : doc["backends"]) {
-            std::string settings;
+            std::string settings, footed;
             const Json values = b.value("settings", Json::object());   // items() must not outlive it
             for (const auto& [k, v] : values.items()) settings += k + "=" + cellText(v) + " ";
+            const Json applied = b.value("footing", Json::object()).value("settings", Json::object());
+            for (const auto& [k, v] : applied.items()) footed += k + "=" + cellText(v) + " ";
             h << "<tr><td>" << htmlEscaped(b.value("name", "")) << "</td><td>" << htmlEscaped(b.value("version", ""))
-              << "</td><td>" << htmlEscaped(settings) << "</td></tr>\n";
+              << "</td><td>" << htmlEscaped(footed.empty() ? "-" : footed) << "</td><td>" << htmlEscaped(settings)
+              << "</td></tr>\n";
         }
         h << "</table>\n";
     }

@@ -61,7 +61,8 @@ std::vector<SweepCurve> sweepCurves(const std::vector<SelectedBackend>& backends
             throw InputError("--vary " + arg + ": the key must start with a selected backend's name and '.', e.g. bullet.solver_iterations");
         const std::string name = key.substr(prefix.size() + 1);
         for (const std::string& v : splitValues(arg, list)) {
-            SelectedBackend run{backends[bi].info, withSetting(backends[bi], key, v)};
+            SelectedBackend run = backends[bi];   // its footing kept; the varied key on top
+            run.settings = withSetting(backends[bi], key, v);
             for (const SweepCurve& c : per[bi])
                 if (c.setting == name + "=" + v) throw InputError("--vary " + arg + ": " + key + "=" + v + " given twice");
             per[bi].push_back({bi, std::move(run), prefix + " " + name + "=" + v, name + "=" + v});

@@ -10,6 +10,12 @@ std::unique_ptr<Backend> create(const Scene& scene, const Settings& settings) {
     return std::make_unique<NativeBackend>(scene, NativeSettings::from(settings));
 }
 
+// Equal footing: `substeps` contact ticks a frame (flight and impacts stay exact at any rate);
+// native's friction is Coulomb's cone on either footing.
+std::vector<std::pair<std::string, std::string>> equalFooting(int substeps) {
+    return {{"native.contact_substeps", std::to_string(substeps)}};
+}
+
 }  // namespace
 
 void registerBackend() {
@@ -31,6 +37,7 @@ void registerBackend() {
     // The native backend is VROC's own: its defaults are the reference, it deviates from nothing.
     info.settings = NativeSettings::specs();
     info.create = &create;
+    info.equal_footing = &equalFooting;
     BackendRegistry::global().add(std::move(info));
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vroc/core/math.h"
@@ -120,6 +121,11 @@ struct BackendInfo {
     std::vector<SettingSpec> settings;
     /// Creates a backend for the scene. Throws InputError for settings the scene cannot honour.
     std::unique_ptr<Backend> (*create)(const Scene& scene, const Settings& settings) = nullptr;
+    /// The equal footing of a fair comparison (`--footing equal`, docs/harness.md): the settings that
+    /// make the engine take `substeps` internal steps per frame and use Coulomb's isotropic friction
+    /// where it has it, as key=value pairs applied over its defaults (the user's --set still wins).
+    /// Null: the engine has no such settings (it runs at its defaults on either footing).
+    std::vector<std::pair<std::string, std::string>> (*equal_footing)(int substeps) = nullptr;
 };
 
 }  // namespace vroc

@@ -13,16 +13,38 @@
 
 namespace vroc::harness {
 
+/// On what footing the engines are compared (issue 23; docs/harness.md, "Footing").
+struct Footing {
+    enum class Kind {
+        Defaults,   ///< each engine as its users run it, every departure listed with why
+        Equal,      ///< the same internal steps per frame, Coulomb's isotropic friction where an engine has it
+    };
+    Kind kind = Kind::Defaults;
+    int substeps = 4;   ///< [steps per frame] Equal: every engine's internal steps (Box2D v3's 4 by default)
+};
+
+/// "defaults" or "equal"; throws InputError naming --footing otherwise.
+Footing::Kind footingKind(const std::string& word);
+/// "defaults" / "equal (4 internal steps per frame, isotropic friction)".
+std::string footingText(const Footing& footing);
+
 struct SelectedBackend {
     const BackendInfo* info = nullptr;   ///< from BackendRegistry::global(); not owned
-    Settings settings;                   ///< resolved: defaults plus the routed overrides
+    Settings settings;                   ///< resolved: defaults, then the footing's, then the routed overrides
+    Footing footing;                     ///< the footing it was selected on
+    /// What the equal footing set (before the user's --set, which wins); empty on the defaults footing.
+    std::vector<std::pair<std::string, std::string>> footing_settings;
 };
 
 /// `list` is "a,b,..." (empty: every registered backend, in name order). Throws InputError for an
 /// unknown backend, a repeated one, an empty list, or a --set key that names no known backend.
-std::vector<SelectedBackend> selectBackends(const std::string& list, const std::vector<std::string>& assignments);
+/// On the equal footing each backend's BackendInfo::equal_footing settings go over its defaults and
+/// under the user's --set.
+std::vector<SelectedBackend> selectBackends(const std::string& list, const std::vector<std::string>& assignments,
+                                            const Footing& footing = {});
 
-/// [{name, version, description, settings{key: value}}] for metrics.json.
+/// [{name, version, description, settings{key: value}, deviations, footing{kind, substeps, settings}}]
+/// for metrics.json.
 Json backendsJson(const std::vector<SelectedBackend>& backends);
 
 /// The backends of `requested` that can represent `scene` by their declared capabilities
