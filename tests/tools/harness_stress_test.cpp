@@ -249,7 +249,7 @@ TEST(HarnessStress, AFailingRequiredStressMetricOnNativeFailsTheVerdict) {
     native.name = "native";
     bullet.name = "bullet";
     CheckSuiteResult r;
-    r.backends = {{&native, {}}, {&bullet, {}}};
+    r.backends = {{&native, {}, {}, {}}, {&bullet, {}, {}, {}}};
     r.wall_time_s = {0, 0};
     const auto verdict = [&](const std::vector<CheckRow>& rows) {
         r.rows = rows;
