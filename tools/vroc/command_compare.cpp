@@ -38,8 +38,7 @@ int compare(CompareArgs& a, const Context& context) {
     if (a.dt && !(*a.dt > 0)) throw InputError("--dt: expected a positive number of seconds");
     if (!(a.options.window > 0) || a.options.windows < 1) throw InputError("--window/--windows: expected positive values");
     const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
-    if (!a.quiet && harness::mpi::isRoot() && backends.front().footing.kind == harness::Footing::Kind::Equal)
-        std::fprintf(stderr, "vroc compare: footing %s\n", harness::footingText(backends.front().footing).c_str());
+    announceFooting("compare", backends, a.quiet);
     const Scene scene = loadScene(a.scene_file);
     a.options.frame_dt = a.dt;
     a.options.progress = !a.quiet;

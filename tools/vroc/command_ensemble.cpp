@@ -37,8 +37,7 @@ struct EnsembleArgs {
 
 int ensemble(EnsembleArgs& a, const Context& context) {
     const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
-    if (!a.quiet && harness::mpi::isRoot() && backends.front().footing.kind == harness::Footing::Kind::Equal)
-        std::fprintf(stderr, "vroc ensemble: footing %s\n", harness::footingText(backends.front().footing).c_str());
+    announceFooting("ensemble", backends, a.quiet);
     if (!a.perturb.empty()) a.options.perturb = harness::parsePerturbation(a.perturb);
     if (!a.dt.empty()) a.options.frame_dt = parseFrameStep(a.dt);
     if (a.options.permutations != 0 && a.options.permutations < 99)

@@ -39,8 +39,7 @@ struct SweepArgs {
 
 int sweep(SweepArgs& a, const Context& context) {
     const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
-    if (!a.quiet && harness::mpi::isRoot() && backends.front().footing.kind == harness::Footing::Kind::Equal)
-        std::fprintf(stderr, "vroc sweep: footing %s\n", harness::footingText(backends.front().footing).c_str());
+    announceFooting("sweep", backends, a.quiet);
     if (!a.dts.empty()) a.options.dts = parseFrameSteps(a.dts);
     if (!a.details.empty()) a.options.details = harness::parseDetailLevels(a.details);
     if (a.target && !(*a.target > 0)) throw InputError("--target: expected a positive error in metres");

@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "vroc/harness/mpi_world.h"
+
 namespace vroc::cli {
 
 void addFootingOptions(CLI::App& sub, FootingArgs& args) {
@@ -18,6 +20,12 @@ harness::Footing footingOf(const FootingArgs& args) {
     f.kind = harness::footingKind(args.kind);
     f.substeps = args.substeps;
     return f;
+}
+
+void announceFooting(const std::string& command, const std::vector<harness::SelectedBackend>& backends, bool quiet) {
+    if (quiet || !harness::mpi::isRoot() || backends.empty()) return;
+    if (backends.front().footing.kind != harness::Footing::Kind::Equal) return;
+    harness::progressLine(command, "footing " + harness::footingText(backends.front().footing));
 }
 
 }  // namespace vroc::cli

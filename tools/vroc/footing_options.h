@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "vroc/harness/backend_selection.h"
 
@@ -23,5 +24,9 @@ void addFootingOptions(CLI::App& sub, FootingArgs& args);
 
 /// The footing the options ask for; throws InputError for a word that is not one.
 harness::Footing footingOf(const FootingArgs& args);
+
+/// On the equal footing, "vroc <command>: footing ..." on stderr (rank 0, unless `quiet`); the
+/// defaults footing is the normal case and says nothing.
+void announceFooting(const std::string& command, const std::vector<harness::SelectedBackend>& backends, bool quiet);
 
 }  // namespace vroc::cli

@@ -10,10 +10,10 @@ namespace vroc::test {
 namespace {
 
 TEST(MujocoFreeFall, MatchesSemiImplicitEulerOnTheFrameGrid) {
-    Scene scene = emptyScene();
-    const Vec3 x0(0.5, -1.0, 10.0), v0(1.0, 0.25, 3.0);
-    const int ball = addBall(scene, "ball", 0.1, 2.0, x0);
-    scene.bodies[ball].linear_velocity = v0;
+    const FreeFlight f;
+    const Scene& scene = f.scene;
+    const int ball = f.ball;
+    const Vec3 v0 = f.v0;
     const int frames = 90;
     auto backend = makeMujoco(scene);
     run(*backend, scene, frames);
@@ -21,8 +21,8 @@ TEST(MujocoFreeFall, MatchesSemiImplicitEulerOnTheFrameGrid) {
     const double h = scene.frame_dt / 9;   // ceil((1/60) / 0.002) = 9 equal steps
     const double n = 9.0 * frames, t = n * h;
     const Vec3 g = scene.gravity;
-    const Vec3 discrete = x0 + n * h * v0 + g * (h * h * n * (n + 1) / 2);
-    const Vec3 continuous = x0 + v0 * t + 0.5 * g * t * t;
+    const Vec3 discrete = f.euler(h, n);
+    const Vec3 continuous = f.parabola(t);
     const BodyState s = backend->bodyState(ball);
     EXPECT_LT((s.pose.position - discrete).norm(), 1e-12 * discrete.norm());
     EXPECT_LT((s.linear_velocity - (v0 + g * t)).norm(), 1e-12);

@@ -61,15 +61,15 @@ TEST(MujocoSolverOptions, SettingsReachTheModelAndBadValuesAreRefused) {
 // parabola; the implicit integrator has no velocity-dependent force to treat implicitly here and
 // is the semi-implicit Euler closed form of free_fall_test.cpp (g h t / 2 off the parabola).
 TEST(MujocoSolverOptions, IntegratorsAgainstTheClosedFormsOfFreeFlight) {
-    Scene scene = emptyScene();
-    const Vec3 x0(0.5, -1.0, 10.0), v0(1.0, 0.25, 3.0);
-    const int ball = addBall(scene, "ball", 0.1, 2.0, x0);
-    scene.bodies[ball].linear_velocity = v0;
+    const FreeFlight f;
+    const Scene& scene = f.scene;
+    const int ball = f.ball;
+    const Vec3 v0 = f.v0;
     const int frames = 90;
     const double h = scene.frame_dt / 9, n = 9.0 * frames, t = n * h;
     const Vec3 g = scene.gravity;
-    const Vec3 continuous = x0 + v0 * t + 0.5 * g * t * t;
-    const Vec3 euler = x0 + n * h * v0 + g * (h * h * n * (n + 1) / 2);
+    const Vec3 continuous = f.parabola(t);
+    const Vec3 euler = f.euler(h, n);
 
     auto rk4 = makeMujoco(scene, {{"mujoco.integrator", "rk4"}});
     run(*rk4, scene, frames);

@@ -45,6 +45,7 @@ void addPart(const Shape& shape, const Pose& local, std::vector<ConvexPart>& par
         for (int v = 0; v < p.mesh->vertexCount(); ++v)
             p.bound_radius = std::max(p.bound_radius, (local.apply(p.mesh->position(v)) - p.bound_center).norm());
     }
+    p.frame_radius = p.bound_center.norm() + p.bound_radius;
     parts.push_back(std::move(p));
 }
 

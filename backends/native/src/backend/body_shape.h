@@ -20,6 +20,7 @@ struct ConvexPart {
     Pose local;                                   ///< part frame -> scene body frame
     Vec3 bound_center = Vec3::Zero();             ///< [m] centre of a ball holding the part, scene body frame
     double bound_radius = 0.0;                    ///< [m] its radius
+    double frame_radius = 0.0;                    ///< [m] |bound_center| + bound_radius: the part lies within it of the frame origin
     Vec3 box_lower = Vec3::Zero();                ///< [m] the part's box in its own frame
     Vec3 box_upper = Vec3::Zero();
     /// [m] A lower bound on the distance from the part (at `world`: part frame -> world) to a ball

@@ -147,10 +147,26 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
     const double t = valid_at_[static_cast<std::size_t>(ps.a)];
     const double window = reach > cd && heldAt(ps.a, t) && heldAt(ps.b, t) ? reach : cd;
     // A compound pair skips part pairs whose balls are farther apart than the pair can close within
-    // a frame (a box in a drum of 30 slabs queries the two or three near it); their gap is the
-    // balls' gap, a lower bound.
+    // a frame (a box in a drum of 30 slabs queries the two or three near it); their gap is a lower
+    // bound (the balls' gap, or a ball against the other part's box).
     const bool compound = sa.parts.size() * sb.parts.size() > 1;
     const double far_gap = compound ? window + closingSpeed(ps, frame_dt_) * frame_dt_ : kNever;
+    auto addGap = [&out](const PartGap& g) {
+        out.parts.push_back(g);
+        if (g.distance < out.distance) {
+            out.distance = g.distance;
+            out.normal = g.normal;
+        }
+    };
+    auto addManifold = [&](ContactManifold& m, std::size_t part_pair) {
+        m.body_a = ps.a;
+        m.body_b = ps.b;
+        m.pair = pair_index;
+        m.restitution = mat.restitution;
+        m.friction = mat.friction;
+        out.manifolds.push_back(std::move(m));
+        out.manifold_part.push_back(static_cast<int>(part_pair));
+    };
     for (std::size_t i = 0; i < sa.parts.size(); ++i) {
         const Pose pa = fa * sa.parts[i].local;
         for (std::size_t j = 0; j < sb.parts.size(); ++j) {
@@ -166,11 +182,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
                     gap = std::max({gap, sb.parts[j].gapToBall(pb, ca, sa.parts[i].bound_radius),
                                     sa.parts[i].gapToBall(pa, cb, sb.parts[j].bound_radius)});
                 if (gap > far_gap) {
-                    out.parts.push_back({gap, Vec3((cb - ca) / apart), true});
-                    if (gap < out.distance) {
-                        out.distance = gap;
-                        out.normal = out.parts.back().normal;
-                    }
+                    addGap({gap, Vec3((cb - ca) / apart), true});
                     anchor.valid = false;
                     continue;
                 }
@@ -179,23 +191,12 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
             // query keeps that manifold, carried along by the motion (manifold_anchor.h): a resting
             // pile's pairs are not walked and clipped again at every solve.
             if (anchor.valid && anchor.window == window && settings_.manifold_reuse > 0.0) {
-                const double radius_a = sa.parts[i].bound_center.norm() + sa.parts[i].bound_radius;
-                const double radius_b = sb.parts[j].bound_center.norm() + sb.parts[j].bound_radius;
                 ContactManifold m;
-                if (anchoredMotion(anchor, fa, fb, radius_a, radius_b) <= settings_.manifold_reuse * cd &&
+                if (anchoredMotion(anchor, fa, fb, sa.parts[i].frame_radius, sb.parts[j].frame_radius) <=
+                        settings_.manifold_reuse * cd &&
                     carryManifold(anchor, fa, fb, m)) {
-                    m.body_a = ps.a;
-                    m.body_b = ps.b;
-                    m.pair = pair_index;
-                    m.restitution = mat.restitution;
-                    m.friction = mat.friction;
-                    out.parts.push_back({m.distance, m.normal});
-                    if (m.distance < out.distance) {
-                        out.distance = m.distance;
-                        out.normal = m.normal;
-                    }
-                    out.manifolds.push_back(std::move(m));
-                    out.manifold_part.push_back(static_cast<int>(part_pair));
+                    addGap({m.distance, m.normal});
+                    addManifold(m, part_pair);
                     ++out.carried;
                     continue;
                 }
@@ -206,26 +207,16 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
             out.walk_steps += r.walk_steps;
             out.max_walk = std::max(out.max_walk, r.walk_steps);
             if (!r.converged) ++out.not_converged;
-            out.parts.push_back({r.distance, r.normal});
-            if (r.distance < out.distance) {
-                out.distance = r.distance;
-                out.normal = r.normal;
-            }
+            addGap({r.distance, r.normal});
             anchor.valid = false;
             if (!(r.distance < window)) continue;
             ContactManifold m;
-            m.body_a = ps.a;
-            m.body_b = ps.b;
-            m.pair = pair_index;
             m.normal = r.normal;
             m.distance = r.distance;
             partPatch(sa.parts[i], pa, sb.parts[j], pb, cache, r, cd, reach, patch);
             setManifoldPoints(patch, r, cd, reach > cd, m);
-            m.restitution = mat.restitution;
-            m.friction = mat.friction;
             anchorManifold(m, fa, fb, window, anchor);
-            out.manifolds.push_back(std::move(m));
-            out.manifold_part.push_back(static_cast<int>(part_pair));
+            addManifold(m, part_pair);
         }
     }
     return out;
