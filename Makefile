@@ -2,9 +2,9 @@
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 PACKAGES := cmake ninja-build g++ make pkg-config git ca-certificates \
-  libeigen3-dev libbullet-dev libode-dev libmujoco-dev libccd-dev libassimp-dev libqhull-dev \
+  libeigen3-dev libbullet-dev libode-dev libmujoco-dev libdart-dev libccd-dev libassimp-dev libqhull-dev \
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libfmt-dev libopenmpi-dev openmpi-bin \
-  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium libsndfile1-dev libspnav-dev libx11-dev ccache \
+  libosmesa6-dev libpng-dev libssl-dev gnuplot-nox ffmpeg chromium libjs-three libsndfile1-dev libspnav-dev libx11-dev ccache \
   python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 

@@ -17,6 +17,9 @@ find_package(OpenSSL REQUIRED)        # SHA-256 of scene files (libcrypto)
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
 # ODE 0.16 in double precision (the Debian build: pkg-config variable precision=dDOUBLE).
 pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
+# DART 6.12 (libdart-dev; config in /usr/share/dart/cmake): libdart only, which collides with FCL. Never
+# dart-collision-bullet: it links single-precision Bullet beside this project's double one.
+find_package(DART 6.12 REQUIRED COMPONENTS dart CONFIG)
 # MuJoCo 2.2.2. Debian's mujoco::mujoco names /usr/include/libqhull_r/ as an include directory;
 # libqhull-dev provides it (installed by `make deps`), and the path is dropped if it is missing.
 find_package(mujoco REQUIRED)

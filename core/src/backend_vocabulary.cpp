@@ -27,7 +27,7 @@ const std::vector<std::string>& sharedStatistics() {
 
 const std::vector<std::string>& sharedWarnings() {
     static const std::vector<std::string> names{kNonfiniteState, kPenetrationRecovered, kInternalStepCap,
-                                                kIllConditionedSolve};
+                                                kIllConditionedSolve, kContactsDropped};
     return names;
 }
 

@@ -1,20 +1,27 @@
 // SPDX-License-Identifier: MIT
-// Two tiny backends for the harness tests, with trajectories known in closed form: "test-exact"
-// (exact ballistic flight) and "test-euler" (semi-implicit Euler: x_n = exact + g dt t / 2).
+// Tiny backends for the harness tests, with trajectories known in closed form: "test-exact"
+// (exact ballistic flight), "test-euler" (semi-implicit Euler: x_n = exact + g dt t / 2) and
+// "test-dropping" (exact flight that counts one `contacts_dropped` a frame, as an engine whose
+// buffer is full does: its runs are not valid).
 // Neither handles contact; they exist so harness metrics can be checked against hand computation
 // without depending on a real backend.
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "vroc/core/backend.h"
 #include "vroc/core/backend_registry.h"
+#include "vroc/core/backend_vocabulary.h"
+#include "vroc/core/mass_properties.h"
+#include "vroc/harness/backend_selection.h"
 
 namespace vroc::harness_test {
 
 class FlightBackend final : public Backend {
 public:
-    FlightBackend(const Scene& scene, bool exact) : scene_(scene), exact_(exact) {
+    FlightBackend(const Scene& scene, bool exact, bool drops = false) : scene_(scene), exact_(exact), drops_(drops) {
         for (const Body& b : scene.bodies) states_.push_back({b.pose, b.linear_velocity, b.angular_velocity});
     }
     void stepFrame(double dt) override {
@@ -32,6 +39,7 @@ public:
             if (w > 0) s.pose.orientation = (Quat(Eigen::AngleAxisd(w * dt, s.angular_velocity / w)) * s.pose.orientation).normalized();
         }
         time_ += dt;
+        if (drops_) ++dropped_;
     }
     double time() const override { return time_; }
     int bodyCount() const override { return static_cast<int>(states_.size()); }
@@ -41,12 +49,16 @@ public:
     }
     void applyImpulse(int, const Vec3&, const Vec3&) override {}
     std::vector<CollisionEvent> takeEvents() override { return {}; }
-    WarningCounts warnings() const override { return {}; }
+    WarningCounts warnings() const override {
+        return drops_ ? WarningCounts{{vocabulary::kContactsDropped, dropped_}} : WarningCounts{};
+    }
     Statistics statistics() const override { return {{"bodies", static_cast<double>(states_.size())}}; }
 
 private:
     Scene scene_;
     bool exact_;
+    bool drops_;
+    std::uint64_t dropped_ = 0;
     std::vector<BodyState> states_;
     double time_ = 0;
 };
@@ -69,8 +81,38 @@ inline void registerTestBackends() {
     euler.name = "test-euler";
     euler.description = "semi-implicit Euler flight (tests only)";
     euler.create = [](const Scene& s, const Settings&) -> std::unique_ptr<Backend> { return std::make_unique<FlightBackend>(s, false); };
+    BackendInfo dropping = exact;
+    dropping.name = "test-dropping";
+    dropping.description = "exact flight that drops contacts every frame (tests only)";
+    dropping.create = [](const Scene& s, const Settings&) -> std::unique_ptr<Backend> {
+        return std::make_unique<FlightBackend>(s, true, true);
+    };
     BackendRegistry::global().add(exact);
     BackendRegistry::global().add(euler);
+    BackendRegistry::global().add(dropping);
+}
+
+/// A ball in free flight from 100 m up (frame 0.01 s, g = 10 m/s^2): x(t) in closed form.
+inline Scene flightScene() {
+    Scene s;
+    s.name = "flight";
+    s.gravity = Vec3(0, 0, -10);
+    s.frame_dt = 0.01;
+    s.materials.push_back({"m", 0.5, 0.5});
+    Body b;
+    b.name = "ball";
+    b.shape = Shape::sphere(0.1);
+    b.mass_properties = massProperties(b.shape, 2.0);
+    b.pose.position = Vec3(0, 0, 100);
+    b.linear_velocity = Vec3(1, 0, 3);
+    s.bodies.push_back(b);
+    return s;
+}
+
+/// The test backends of `list` (comma-separated), registered first.
+inline std::vector<harness::SelectedBackend> testBackends(const std::string& list) {
+    registerTestBackends();
+    return harness::selectBackends(list, {});
 }
 
 }  // namespace vroc::harness_test

@@ -10,10 +10,11 @@
 
 #include "command.h"
 #include "footing_options.h"
+#include "report_view.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
-#include "vroc/core/scene_loader.h"
 #include "vroc/core/recording/output_dir.h"
+#include "vroc/core/scene_loader.h"
 #include "vroc/harness/compare.h"
 #include "vroc/harness/compare_document.h"
 #include "vroc/harness/mpi_world.h"
@@ -31,6 +32,7 @@ struct CompareArgs {
     PoolArgs pool;
     FootingArgs footing;
     bool quiet = false;
+    bool no_view = false;
 };
 
 int compare(CompareArgs& a, const Context& context) {
@@ -50,6 +52,7 @@ int compare(CompareArgs& a, const Context& context) {
                                                                          a.options.command_line);
                                      });
     if (!harness::mpi::isRoot()) return 0;
+    if (!a.no_view && a.options.write_csv) writeReportView(out, "compare", a.quiet);
     std::printf("vroc compare: report %s\n", r.report.string().c_str());
     return 0;
 }
@@ -69,6 +72,7 @@ Action setupCompare(CLI::App& sub, const Context& context) {
     sub.add_flag("--quiet,-q", a->quiet, "No progress bar (it is drawn only on a terminal anyway)");
     addPoolOptions(sub, a->pool);
     addFootingOptions(sub, a->footing);
+    sub.add_flag("--no-view", a->no_view, "Do not write view.html, the 3D replay next to the report (docs/viewer.md)");
     sub.footer("Writes metrics.json, <backend>/{trajectory,events,step_times}.csv and report.html.");
     return [a, context] { return compare(*a, context); };
 }

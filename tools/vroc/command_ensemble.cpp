@@ -9,12 +9,13 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
-#include "frame_steps.h"
 #include "footing_options.h"
+#include "frame_steps.h"
+#include "report_view.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
-#include "vroc/core/scene_loader.h"
 #include "vroc/core/recording/output_dir.h"
+#include "vroc/core/scene_loader.h"
 #include "vroc/harness/ensemble.h"
 #include "vroc/harness/ensemble_document.h"
 #include "vroc/harness/mpi_world.h"
@@ -33,6 +34,7 @@ struct EnsembleArgs {
     PoolArgs pool;
     FootingArgs footing;
     bool quiet = false;
+    bool no_view = false;
 };
 
 int ensemble(EnsembleArgs& a, const Context& context) {
@@ -59,6 +61,7 @@ int ensemble(EnsembleArgs& a, const Context& context) {
                                      });
     if (!harness::mpi::isRoot()) return 0;
     std::fputs(harness::ensembleVerdictText(result).c_str(), stdout);
+    if (!a.no_view) writeReportView(out, "ensemble", a.quiet);
     std::printf("vroc ensemble: report %s\n", r.report.string().c_str());
     return 0;
 }
@@ -83,8 +86,12 @@ Action setupEnsemble(CLI::App& sub, const Context& context) {
     sub.add_flag("--quiet,-q", a->quiet, "No progress bar");
     addPoolOptions(sub, a->pool);
     addFootingOptions(sub, a->footing);
-    sub.footer("Prints, per backend pair, the observables that distinguish them; writes metrics.json, report.html\n"
-               "and each finished member to runs/. Runs in parallel (--jobs) and over MPI ranks (mpirun -n R vroc ensemble ...).");
+    sub.add_flag("--no-view", a->no_view, "Do not write view.html, the 3D replay next to the report (docs/viewer.md)");
+    sub.footer(
+        "Prints, per backend pair, the observables that distinguish them (test and effect above the resolution\n"
+        "floor), those within resolution or not reached, and any dropped members; writes metrics.json, report.html\n"
+        "(led by a digest of pairs x observables coloured by effect) and each finished member to runs/.\n"
+        "Runs in parallel (--jobs) and over MPI ranks (mpirun -n R vroc ensemble ...).");
     return [a, context] { return ensemble(*a, context); };
 }
 

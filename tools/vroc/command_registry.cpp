@@ -13,7 +13,7 @@
 #define VROC_COMMAND_LIST(X) \
     X(Backends)              \
     X(Run)                   \
-    X(Compare) X(Check) X(Sweep) X(Ensemble) X(Report) \
+    X(Compare) X(Check) X(Sweep) X(Ensemble) X(Report) X(View) \
     X(Plugins)               \
     VROC_RENDERER_COMMANDS(X)
 

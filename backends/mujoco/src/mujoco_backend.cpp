@@ -267,21 +267,26 @@ void MujocoBackend::mujocoStep(double h, double end_time) {
 }
 
 // Doubles what overflowed and allocates a new mjData (MuJoCo 2.2 sizes it from the model once).
-// The constraint rows are dear in 2.2 (njmax x njmax and njmax x nv arrays): they grow only while
-// those arrays stay within kMaxRowBytes; past that a full row list stays counted as
-// mujoco.constraint_full (rows dropped). Returns false when nothing could grow.
+// The constraint rows are dear in 2.2 (njmax x njmax and njmax x nv arrays, 12 r^2 + 24 r nv
+// bytes for r rows): they grow only while
+// those arrays stay within kMaxRowBytes (the last growth stops at that size); past that a full row
+// list stays counted as mujoco.constraint_full (rows dropped). Returns false when nothing could grow.
 bool MujocoBackend::growBuffers(bool contacts, bool rows, bool stack) {
     mjModel& m = *model_;
     const int old_nconmax = m.nconmax, old_njmax = m.njmax, old_nstack = m.nstack;
-    const auto rowBytes = [&m](double r) { return 12.0 * r * r + 24.0 * r * m.nv; };
     bool grown = false;
     if (contacts && m.nconmax < (1 << 24)) {
         m.nconmax *= 2;
         grown = true;
     }
-    if (rows && rowBytes(2.0 * m.njmax) <= kMaxRowBytes) {
-        m.njmax *= 2;
-        grown = true;
+    if (rows) {  // doubled, or as many rows as kMaxRowBytes allows when doubling would pass it
+        const double b = 24.0 * m.nv;
+        const double at_cap = std::floor((-b + std::sqrt(b * b + 48.0 * kMaxRowBytes)) / 24.0);
+        const int target = static_cast<int>(std::min(2.0 * m.njmax, at_cap));
+        if (target > m.njmax + m.njmax / 16) {
+            m.njmax = target;
+            grown = true;
+        }
     }
     // The scratch stack holds arrays linear in the rows and dofs (mjcf_writer.cpp's first guess).
     const long needed = 1000000L + 2000L * (static_cast<long>(m.nv) + m.njmax);

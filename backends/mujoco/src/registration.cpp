@@ -51,6 +51,17 @@ BackendCapabilities capabilities() {
     return c;
 }
 
+// Under mujoco.cone=elliptic the friction law is Coulomb's circular cone (MuJoCo's elliptic cone).
+BackendCapabilities capabilitiesWith(const Settings& settings) {
+    BackendCapabilities c = capabilities();
+    const auto cone = settings.values().find("mujoco.cone");
+    if (cone != settings.values().end() && cone->second == "elliptic") {
+        c.friction = FrictionModel::Cone;
+        c.notes.erase("friction");
+    }
+    return c;
+}
+
 // Equal footing: `substeps` internal steps a frame (mujoco.substeps: the restitution mapping made for
 // that step, the contact spring no faster than two of them) and Coulomb's circular cone
 // (mujoco.cone=elliptic: a diagonal slide keeps its heading and its Coulomb distance).
@@ -96,6 +107,7 @@ void registerBackend() {
     info.settings = mujocoSettingSpecs();
     info.create = &create;
     info.equal_footing = &equalFooting;
+    info.capabilities_with = &capabilitiesWith;
     BackendRegistry::global().add(std::move(info));
 }
 

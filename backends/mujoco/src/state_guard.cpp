@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "vroc/core/backend_vocabulary.h"
+
 namespace vroc::mujoco {
 namespace {
 
@@ -108,10 +110,15 @@ void StateGuard::restoreStart(mjData& d) const {
 }
 
 WarningCounts StateGuard::counts() const {
-    return {{"mujoco.bad_qpos", bad_qpos_},         {"mujoco.bad_qvel", bad_qvel_},
-            {"mujoco.bad_qacc", bad_qacc_},         {"mujoco.contact_full", contact_full_},
-            {"mujoco.constraint_full", constraint_full_}, {"mujoco.inertia", inertia_},
-            {"mujoco.error", errors_}};
+    return {{"mujoco.bad_qpos", bad_qpos_},
+            {"mujoco.bad_qvel", bad_qvel_},
+            {"mujoco.bad_qacc", bad_qacc_},
+            {"mujoco.contact_full", contact_full_},
+            {"mujoco.constraint_full", constraint_full_},
+            {"mujoco.inertia", inertia_},
+            {"mujoco.error", errors_},
+            // The shared name for both kinds of drop: the harness marks such a run not valid.
+            {vocabulary::kContactsDropped, contact_full_ + constraint_full_}};
 }
 
 }  // namespace vroc::mujoco

@@ -9,6 +9,7 @@
 #include "vroc/core/build_info.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/state_hash.h"
+#include "vroc/harness/run_validity.h"
 
 namespace vroc::harness {
 namespace {
@@ -29,8 +30,11 @@ struct CellRun {
 Json cellRunJson(const CellRun& r) {
     Json cells = Json::array();
     for (const CheckCell& c : r.cells)
-        cells.push_back({{"measured", number(c.measured)}, {"pass", c.pass ? Json(*c.pass) : Json(nullptr)},
-                         {"support_level", static_cast<int>(c.support.level)}, {"support_reason", c.support.reason}});
+        cells.push_back({{"measured", number(c.measured)},
+                         {"pass", c.pass ? Json(*c.pass) : Json(nullptr)},
+                         {"support_level", static_cast<int>(c.support.level)},
+                         {"support_reason", c.support.reason},
+                         {"not_valid", c.validity.valid ? Json(nullptr) : Json(c.validity.reason)}});
     return {{"cells", cells}, {"seconds", r.seconds}, {"state_hash", r.state_hash}};
 }
 
@@ -41,6 +45,7 @@ CellRun cellRunFromJson(const Json& j) {
         cell.measured = c.at("measured").is_null() ? NAN : c.at("measured").get<double>();
         if (!c.at("pass").is_null()) cell.pass = c.at("pass").get<bool>();
         cell.support = {static_cast<Support>(c.at("support_level").get<int>()), c.at("support_reason").get<std::string>()};
+        if (!c.at("not_valid").is_null()) cell.validity = {false, c.at("not_valid").get<std::string>()};
         r.cells.push_back(std::move(cell));
     }
     r.seconds = j.at("seconds").get<double>();
@@ -50,7 +55,7 @@ CellRun cellRunFromJson(const Json& j) {
 
 // One scenario on one backend: a cell per metric, and the wall time of the run.
 // A scene the backend cannot represent is reported, not run; an approximated one is run and its
-// cells say so.
+// cells say which of the features the run exercised are approximated, and why.
 CellRun runCheckCell(const CheckScenario& sc, const SelectedBackend& b) {
     const Scene scene = sc.build();
     SceneSupport support = sceneSupport(scene, b.info->capabilities);
@@ -66,13 +71,19 @@ CellRun runCheckCell(const CheckScenario& sc, const SelectedBackend& b) {
             support = {Support::Unsupported, e.what()};
         }
     }
+    // Honest labels: "~" only through the features this run exercised (what touched, with which
+    // material and friction law), not every feature the scene file names.
+    if (support.level != Support::Unsupported)
+        support = exercisedSupport(scene, b.info->capabilitiesFor(b.settings), trace.events);
     CellRun run;
+    const RunValidity validity = trace.finite ? runValidity(trace) : RunValidity{};
     for (const CheckMetric& cm : sc.metrics) {
         CheckCell cell;
         cell.support = support;
+        cell.validity = validity;
         if (support.level != Support::Unsupported) {
             cell.measured = trace.finite ? cm.measure(scene, trace) : NAN;
-            if (cm.judged()) cell.pass = passes(cell.measured, cm);
+            if (cm.judged() && validity.valid) cell.pass = passes(cell.measured, cm);
         }
         run.cells.push_back(std::move(cell));
     }

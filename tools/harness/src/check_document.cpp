@@ -13,9 +13,11 @@ namespace vroc::harness {
 namespace {
 
 // A result cell as shown: pass / FAIL / info (reported, not judged), "n/s" when not supported,
-// with "~" when the backend approximates the scene.
+// "n/v" when the run is not valid (the engine dropped contacts), with "~" when the backend
+// approximates the scene.
 std::string cellResult(const CheckCell& cell) {
     if (cell.support.level == Support::Unsupported) return "n/s";
+    if (!cell.validity.valid) return "n/v";
     const std::string verdict = !cell.pass ? "info" : *cell.pass ? "pass" : "FAIL";
     return verdict + (cell.support.level == Support::Exact ? "" : "~");
 }
@@ -25,8 +27,10 @@ Json rowJson(const CheckRow& row, const std::vector<SelectedBackend>& backends) 
     Json results = Json::object();
     for (std::size_t b = 0; b < backends.size(); ++b) {
         const CheckCell& c = row.cells[b];
-        results[backends[b].info->name] = {{"measured", number(c.measured)}, {"pass", c.pass ? Json(*c.pass) : Json(nullptr)},
-                                           {"support", supportText(c.support)}};
+        results[backends[b].info->name] = {{"measured", number(c.measured)},
+                                           {"pass", c.pass ? Json(*c.pass) : Json(nullptr)},
+                                           {"support", supportText(c.support)},
+                                           {"not_valid", c.validity.valid ? Json(nullptr) : Json(c.validity.reason)}};
     }
     return {{"id", m.id}, {"scenario", row.scenario}, {"title", m.title}, {"closed_form", m.closed_form},
             {"units", m.units}, {"expected", m.expected}, {"tolerance", number(m.tolerance)},
@@ -63,7 +67,7 @@ ChartSpec errorChart(const CheckSuiteResult& r) {
         for (std::size_t i = 0; i < r.rows.size(); ++i) {
             const CheckMetric& m = r.rows[i].metric;
             const CheckCell& c = r.rows[i].cells[b];
-            if (!m.judged() || c.support.level == Support::Unsupported) continue;
+            if (!m.judged() || c.support.level == Support::Unsupported || !c.validity.valid) continue;
             const double err = std::isfinite(c.measured) ? std::abs(c.measured - m.expected) : 1e6;
             const double ratio = m.tolerance > 0 ? err / m.tolerance : (err > 0 ? 1e6 : 0);
             s.x.push_back(static_cast<double>(i + 1));
@@ -118,11 +122,14 @@ std::string checkTableText(const CheckSuiteResult& r) {
         }
         out += "\n";
     }
-    // Why a cell is "n/s" or "~": one line per backend and reason.
+    // Why a cell is "n/s", "n/v" or "~": one line per backend and reason.
     std::map<std::string, std::set<std::string>> why;
     for (const CheckRow& row : r.rows)
-        for (std::size_t b = 0; b < r.backends.size(); ++b)
-            if (row.cells[b].support.level != Support::Exact) why[r.backends[b].info->name].insert(supportText(row.cells[b].support));
+        for (std::size_t b = 0; b < r.backends.size(); ++b) {
+            const CheckCell& c = row.cells[b];
+            if (c.support.level != Support::Exact) why[r.backends[b].info->name].insert(supportText(c.support));
+            if (!c.validity.valid) why[r.backends[b].info->name].insert(row.scenario + " n/v: " + c.validity.reason);
+        }
     for (const auto& [n, reasons] : why)
         for (const std::string& reason : reasons) out += n + ": " + reason + "\n";
     return out;

@@ -98,6 +98,9 @@ CompareBackendSummary summarize(const CompareResult& c, const BackendRuns& r, co
     const Scene& scene = c.scene;
     const RunTrace& ref = c.runs[0].main;
     CompareBackendSummary s;
+    s.validity = runValidity(r.main);
+    if (const RunValidity twin = runValidity(r.twin); s.validity.valid && !twin.valid)
+        s.validity = {false, twin.reason + " (in the twin run)"};
     s.timing = summarizeTiming(r.main.step_wall_s, r.main.simulatedTime());
     std::vector<double> us;
     for (double w : r.main.step_wall_s) us.push_back(w * 1e6);
@@ -146,6 +149,7 @@ std::vector<ConsensusRow> consensusRows(const CompareResult& c) {
     for (ConsensusInput& in : inputs) {
         for (const SelectedBackend& b : c.backends) in.backends.push_back(b.info->name);
         in.present.assign(n, true);
+        in.absent_reason.assign(n, "");
         in.noise.assign(n, 0.0);
     }
     std::vector<double> t0(n), e(n);
@@ -153,6 +157,7 @@ std::vector<ConsensusRow> consensusRows(const CompareResult& c) {
         const BackendRuns& r = c.runs[i];
         t0[i] = firstContact(r.main);
         contact.present[i] = std::isfinite(t0[i]);
+        if (!contact.present[i]) contact.absent_reason[i] = "no contact event";
         const double twin_t0 = firstContact(r.twin);
         contact.noise[i] = std::isfinite(twin_t0) && contact.present[i] ? std::abs(t0[i] - twin_t0) : 0.0;
         rest.noise[i] = c.summaries[i].twin_spread.distance.back();
@@ -164,6 +169,13 @@ std::vector<ConsensusRow> consensusRows(const CompareResult& c) {
         return maxPositionError(scene, c.runs[a].main.states.back(), c.runs[b].main.states.back());
     };
     energy.difference = [&](std::size_t a, std::size_t b) { return std::abs(e[a] - e[b]); };
+    for (std::size_t i = 0; i < n; ++i) {  // a run that is not the engine's physics never votes
+        if (c.summaries[i].validity.valid) continue;
+        for (ConsensusInput& in : inputs) {
+            in.present[i] = false;
+            in.absent_reason[i] = invalidLabel(c.summaries[i].validity);
+        }
+    }
     std::vector<ConsensusRow> rows;
     for (const ConsensusInput& in : inputs) {
         const std::vector<double> values = &in == &contact ? t0 : &in == &energy ? e : std::vector<double>{};

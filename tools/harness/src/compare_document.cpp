@@ -16,6 +16,11 @@ Json optionalNumber(const std::optional<double>& v) { return v ? number(*v) : Js
 
 const std::string& nameOf(const CompareResult& c, std::size_t backend) { return c.backends[backend].info->name; }
 
+// A chart's legend entry: the backend, marked when its run is not the engine's physics.
+std::string seriesName(const CompareResult& c, std::size_t backend) {
+    return nameOf(c, backend) + (c.summaries[backend].validity.valid ? "" : " (not valid)");
+}
+
 Json invariantsJson(const InvariantDrift& d) {
     return {{"energy_initial_J", number(d.energy_initial)},
             {"energy_max_abs_change_J", number(d.energy_max_abs_change)},
@@ -35,17 +40,29 @@ Json backendJson(const CompareBackendSummary& s, const BackendRuns& r) {
     const TimingSummary& t = s.timing;
     Json stats = Json::object();
     for (const auto& [k, v] : r.main.statistics) stats[k] = number(v);
-    return {{"timing", {{"p50_us", t.p50_us}, {"p90_us", t.p90_us}, {"p99_us", t.p99_us}, {"mean_us", t.mean_us}, {"max_us", t.max_us},
-                        {"real_time_factor", number(t.real_time_factor)}, {"wall_per_sim_s", t.wall_per_sim_s},
-                        {"histogram", {{"centers_us", s.step_times_us.centers}, {"counts", s.step_times_us.counts}}}}},
+    return {{"valid", s.validity.valid},
+            {"invalid_reason", s.validity.valid ? Json(nullptr) : Json(s.validity.reason)},
+            {"timing",
+             {{"p50_us", t.p50_us},
+              {"p90_us", t.p90_us},
+              {"p99_us", t.p99_us},
+              {"mean_us", t.mean_us},
+              {"max_us", t.max_us},
+              {"real_time_factor", number(t.real_time_factor)},
+              {"wall_per_sim_s", t.wall_per_sim_s},
+              {"histogram", {{"centers_us", s.step_times_us.centers}, {"counts", s.step_times_us.counts}}}}},
             {"penetration", {{"max_m", s.penetration_max}, {"mean_m", s.penetration_mean}}},
             {"invariants", invariantsJson(s.invariants)},
             {"events", eventsJson(s.events)},
-            {"twin", {{"horizon_s", optionalNumber(s.horizon)}, {"ftle_per_s", optionalNumber(s.ftle)},
-                      {"final_spread_m", s.twin_spread.distance.back()}}},
-            {"windows", {{"position_error_m", s.window_position_error}, {"angle_error_rad", s.window_angle_error},
-                         {"mean_position_error_m", number(s.mean_window_position_error)},
-                         {"mean_angle_error_rad", number(s.mean_window_angle_error)}}},
+            {"twin",
+             {{"horizon_s", optionalNumber(s.horizon)},
+              {"ftle_per_s", optionalNumber(s.ftle)},
+              {"final_spread_m", s.twin_spread.distance.back()}}},
+            {"windows",
+             {{"position_error_m", s.window_position_error},
+              {"angle_error_rad", s.window_angle_error},
+              {"mean_position_error_m", number(s.mean_window_position_error)},
+              {"mean_angle_error_rad", number(s.mean_window_angle_error)}}},
             {"finite", r.main.finite},
             {"state_hash", r.state_hash},
             {"deterministic", r.deterministic},
@@ -73,9 +90,16 @@ Json consensusJson(const CompareResult& c, const ConsensusRow& row) {
         noise[nameOf(c, i)] = number(row.noise[i]);
         if (!row.values.empty()) values[nameOf(c, i)] = number(row.values[i]);
     }
-    return {{"observable", row.observable}, {"verdict", row.result.verdict}, {"agreeing", row.result.agreeing},
-            {"outliers", row.result.outliers}, {"floor", row.floor}, {"floor_reason", row.floor_reason},
-            {"values", values}, {"noise", noise}};
+    return {{"observable", row.observable},
+            {"verdict", row.result.verdict},
+            {"agreeing", row.result.agreeing},
+            {"outliers", row.result.outliers},
+            {"left_out", row.result.left_out},
+            {"uninformative", row.result.uninformative},
+            {"floor", row.floor},
+            {"floor_reason", row.floor_reason},
+            {"values", values},
+            {"noise", noise}};
 }
 
 Json consensusTable(const CompareResult& c) {
@@ -90,10 +114,13 @@ Json consensusTable(const CompareResult& c) {
             value_text += v;
         }
         if (row.values.empty()) value_text = "(pairwise: largest body distance between final states)";
-        rows.push_back({row.observable, value_text, row.result.verdict, agreeing, row.floor, row.floor_reason});
+        std::string left_out;
+        for (const std::string& l : row.result.left_out) left_out += (left_out.empty() ? "" : "; ") + l;
+        rows.push_back(
+            {row.observable, value_text, row.result.verdict, agreeing, left_out, row.floor, row.floor_reason});
     }
     return tableJson("consensus", "Consensus: which backends agree (within their own twin noise floors plus the floor)",
-                     {"observable", "values", "verdict", "agreeing", "floor", "floor: why"}, rows);
+                     {"observable", "values", "verdict", "agreeing", "left out", "floor", "floor: why"}, rows);
 }
 
 Json summaryTable(const CompareResult& c) {
@@ -101,9 +128,11 @@ Json summaryTable(const CompareResult& c) {
     for (std::size_t i = 0; i < c.backends.size(); ++i) {
         const CompareBackendSummary& s = c.summaries[i];
         const BackendRuns& r = c.runs[i];
-        rows.push_back({nameOf(c, i), number(s.timing.real_time_factor), s.timing.p50_us, s.timing.p99_us, s.penetration_max * 1e3,
-                        number(s.invariants.energy_max_abs_change), optionalNumber(s.events.first_contact),
-                        optionalNumber(s.events.rest_time), optionalNumber(s.horizon), number(s.mean_window_position_error * 1e3),
+        const std::string name = s.validity.valid ? nameOf(c, i) : nameOf(c, i) + " (" + invalidLabel(s.validity) + ")";
+        rows.push_back({name, number(s.timing.real_time_factor), s.timing.p50_us, s.timing.p99_us,
+                        s.penetration_max * 1e3, number(s.invariants.energy_max_abs_change),
+                        optionalNumber(s.events.first_contact), optionalNumber(s.events.rest_time),
+                        optionalNumber(s.horizon), number(s.mean_window_position_error * 1e3),
                         r.main.finite ? "pass" : "FAIL", r.deterministic ? "pass" : "FAIL"});
     }
     const int at_once = c.execution.atOnce();
@@ -118,8 +147,13 @@ Json summaryTable(const CompareResult& c) {
 Json pairsTable(const CompareResult& c) {
     std::vector<std::vector<Json>> rows;
     for (const ComparePair& p : c.pairs) {
-        rows.push_back({nameOf(c, 0) + " vs " + nameOf(c, p.backend), maxDivergence(p), p.divergence.distance.back(),
-                        optionalNumber(p.significance.first_time), p.significance.fraction});
+        const RunValidity& va = c.summaries[0].validity;
+        const RunValidity& vb = c.summaries[p.backend].validity;
+        const std::string mark =
+            va.valid && vb.valid ? "" : " (not valid: " + (va.valid ? nameOf(c, p.backend) : nameOf(c, 0)) + ")";
+        rows.push_back({nameOf(c, 0) + " vs " + nameOf(c, p.backend) + mark, maxDivergence(p),
+                        p.divergence.distance.back(), optionalNumber(p.significance.first_time),
+                        p.significance.fraction});
     }
     return tableJson("pairs", "Cross-backend divergence (counts only above both twin spreads)",
                      {"pair", "max [m]", "final [m]", "first significant [s]", "significant fraction [-]"}, rows);
@@ -156,14 +190,15 @@ void addCharts(const CompareResult& c, Json& doc) {
         for (std::size_t i = 0; i < n; ++i) {
             std::vector<double> y;
             for (const auto& s : c.runs[i].main.states) y.push_back(s[static_cast<std::size_t>(body)].pose.position[axis]);
-            chart.series.push_back(traceSeries(c.runs[i].main, nameOf(c, i), y));
+            chart.series.push_back(traceSeries(c.runs[i].main, seriesName(c, i), y));
         }
         doc["charts"].push_back(chartJson(chart));
     }
     ChartSpec div{"divergence", "Divergence from " + nameOf(c, 0) + " with twin noise floors",
                   "t [s]", "max body distance [m]", false, true, {}};
     for (const ComparePair& p : c.pairs)
-        div.series.push_back(traceSeries(ref, nameOf(c, 0) + " vs " + nameOf(c, p.backend), p.divergence.distance));
+        div.series.push_back(
+            traceSeries(ref, seriesName(c, 0) + " vs " + seriesName(c, p.backend), p.divergence.distance));
     for (std::size_t i = 0; i < n; ++i)
         div.series.push_back(traceSeries(c.runs[i].main, "noise floor " + nameOf(c, i) + " (twin spread)", c.summaries[i].twin_spread.distance));
     doc["charts"].push_back(chartJson(div));
@@ -177,8 +212,8 @@ void addCharts(const CompareResult& c, Json& doc) {
     for (std::size_t i = 0; i < n; ++i) {
         std::vector<double> e;
         for (const auto& inv : c.runs[i].main.invariants) e.push_back(inv.energy());
-        energy.series.push_back(traceSeries(c.runs[i].main, nameOf(c, i), e));
-        pen.series.push_back(traceSeries(c.runs[i].main, nameOf(c, i), c.runs[i].penetration));
+        energy.series.push_back(traceSeries(c.runs[i].main, seriesName(c, i), e));
+        pen.series.push_back(traceSeries(c.runs[i].main, seriesName(c, i), c.runs[i].penetration));
         win.series.push_back({nameOf(c, i), "linespoints", anchor_times, c.summaries[i].window_position_error});
         hist.series.push_back({nameOf(c, i), "steps", c.summaries[i].step_times_us.centers, c.summaries[i].step_times_us.counts});
     }
@@ -207,6 +242,13 @@ Json compareDocument(const CompareResult& c, const std::string& command_line) {
     results["pairs"] = pairs;
     results["consensus"] = consensus;
     doc["results"] = results;
+    std::string not_valid;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!c.summaries[i].validity.valid)
+            not_valid += (not_valid.empty() ? "" : "; ") + nameOf(c, i) + ": " + c.summaries[i].validity.reason;
+    if (!not_valid.empty())
+        doc["summary"] =
+            "Not valid (shown, but not the engine's physics, and left out of the consensus): " + not_valid + ".";
     // The report leads with the consensus: which backend is the odd one out, per observable.
     doc["tables"].push_back(consensusTable(c));
     doc["tables"].push_back(summaryTable(c));

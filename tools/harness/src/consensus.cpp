@@ -5,14 +5,53 @@
 #include <cmath>
 
 namespace vroc::harness {
+namespace {
+
+// Backends that agree with every other voter only through their own noise (each difference is
+// within their noise plus the floor, and beyond the other's noise plus the floor): whatever the
+// others say, they would agree, so their agreement says nothing.
+std::vector<std::size_t> uninformativeOf(const ConsensusInput& in, const std::vector<std::size_t>& idx) {
+    std::vector<std::size_t> out;
+    if (idx.size() < 3) return out;  // with two, the pair's verdict is all there is
+    for (std::size_t i : idx) {
+        if (!(in.noise[i] > in.floor)) continue;
+        const bool only_by_own_noise = std::all_of(idx.begin(), idx.end(), [&](std::size_t j) {
+            const double d = in.difference(i, j);
+            return j == i || (std::isfinite(d) && d <= in.noise[i] + in.floor && d > in.noise[j] + in.floor);
+        });
+        if (only_by_own_noise) out.push_back(i);
+    }
+    if (out.size() + 2 > idx.size()) out.clear();  // keep at least two voters
+    return out;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
+
+}  // namespace
 
 ConsensusResult consensus(const ConsensusInput& in) {
     ConsensusResult out;
     std::vector<std::size_t> idx;
-    for (std::size_t i = 0; i < in.backends.size(); ++i)
-        if (in.present[i]) idx.push_back(i);
+    for (std::size_t i = 0; i < in.backends.size(); ++i) {
+        if (in.present[i]) {
+            idx.push_back(i);
+            continue;
+        }
+        const bool reason = i < in.absent_reason.size() && !in.absent_reason[i].empty();
+        out.left_out.push_back(in.backends[i] + ": " + (reason ? in.absent_reason[i] : std::string("no value")));
+    }
+    const std::vector<std::size_t> quiet = uninformativeOf(in, idx);
+    for (std::size_t i : quiet) out.uninformative.push_back(in.backends[i]);
+    idx.erase(std::remove_if(idx.begin(), idx.end(),
+                             [&](std::size_t i) { return std::find(quiet.begin(), quiet.end(), i) != quiet.end(); }),
+              idx.end());
+    const std::string suffix = out.uninformative.empty() ? "" : " (uninformative: " + joined(out.uninformative) + ")";
     if (idx.size() < 2) {
-        out.verdict = "too few values";
+        out.verdict = "too few values" + suffix;
         for (std::size_t i : idx) out.agreeing.push_back(in.backends[i]);
         return out;
     }
@@ -32,17 +71,16 @@ ConsensusResult consensus(const ConsensusInput& in) {
     std::sort(group.begin(), group.end());
     for (std::size_t g : group) out.agreeing.push_back(in.backends[g]);
     if (group.size() == idx.size()) {
-        out.verdict = "all agree";
+        out.verdict = "all agree" + suffix;
         return out;
     }
     if (2 * group.size() > idx.size() && group.size() >= 2) {
         for (std::size_t i : idx)
             if (std::find(group.begin(), group.end(), i) == group.end()) out.outliers.push_back(in.backends[i]);
-        out.verdict = "outlier: ";
-        for (std::size_t k = 0; k < out.outliers.size(); ++k) out.verdict += (k ? ", " : "") + out.outliers[k];
+        out.verdict = "outlier: " + joined(out.outliers) + suffix;
         return out;
     }
-    out.verdict = "no majority";
+    out.verdict = "no majority" + suffix;
     return out;
 }
 

@@ -43,7 +43,8 @@ constexpr const char* kStyle = R"(body{font-family:sans-serif;margin:24px;max-wi
 table{border-collapse:collapse;margin:8px 0 20px}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}
 th{background:#eef}td:first-child,th:first-child{text-align:left}.text{text-align:left}.pass{background:#dfd}.fail{background:#fbb;font-weight:bold}
 figure{margin:12px 0 28px}figcaption{font-weight:bold}h2{border-bottom:2px solid #88a;margin-top:36px}
-pre{background:#f4f4f4;padding:8px;white-space:pre-wrap})";
+pre{background:#f4f4f4;padding:8px;white-space:pre-wrap}
+.eff-large{background:#f99}.eff-medium{background:#fc9}.eff-small{background:#ffc}.eff-none{background:#f7f7f7;color:#555}.eff-na{background:#ddd;color:#555;font-style:italic})";
 
 std::string tableHtml(const Json& table) {
     std::ostringstream h;
@@ -51,15 +52,19 @@ std::string tableHtml(const Json& table) {
       << "\"><tr>";
     for (const Json& c : table["columns"]) h << "<th>" << htmlEscaped(c.get<std::string>()) << "</th>";
     h << "</tr>\n";
-    for (const Json& row : table["rows"]) {
+    // Optional "cell_classes": rows of CSS class names, one per cell ("" for none), e.g. an effect's colour.
+    const Json classes = table.value("cell_classes", Json::array());
+    for (std::size_t r = 0; r < table["rows"].size(); ++r) {
+        const Json& row = table["rows"][r];
         h << "<tr>";
-        for (const Json& cell : row) {
+        for (std::size_t c = 0; c < row.size(); ++c) {
+            const Json& cell = row[c];
             const std::string text = cellText(cell);
-            const char* cls = text == "pass"   ? " class=\"pass\""
-                              : text == "FAIL" ? " class=\"fail\""
-                              : cell.is_string() ? " class=\"text\""
-                                                 : "";
-            h << "<td" << cls << ">" << htmlEscaped(text) << "</td>";
+            std::string cls = text == "pass" ? "pass" : text == "FAIL" ? "fail" : cell.is_string() ? "text" : "";
+            if (r < classes.size() && c < classes[r].size() && !classes[r][c].get<std::string>().empty())
+                cls += (cls.empty() ? "" : " ") + classes[r][c].get<std::string>();
+            h << "<td" << (cls.empty() ? "" : " class=\"" + htmlEscaped(cls) + "\"") << ">" << htmlEscaped(text)
+              << "</td>";
         }
         h << "</tr>\n";
     }
@@ -127,6 +132,14 @@ fs::path writeReport(const std::vector<Json>& documents, const fs::path& out_dir
     std::ostringstream h;
     h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>VROC report</title>\n<style>" << kStyle
       << "</style></head><body>\n<h1>VROC comparison report</h1>\n";
+    // The 3D replay (docs/viewer.md): `vroc compare` and `vroc ensemble` write view.html next to
+    // the report (tools/vroc/report_view.cpp); a merged report of several runs has none.
+    const std::string command = documents.size() == 1 ? documents[0].value("command", "") : "";
+    if (command == "compare" || command == "ensemble")
+        h << "<section id=\"replay\">\n<h2>3D replay</h2>\n<p><a href=\"view.html\">view.html</a>: every backend "
+             "side by side (or overlaid as ghosts) with a shared time slider; written by <code>vroc view</code>.</p>\n"
+             "<iframe src=\"view.html\" title=\"3D replay\" style=\"width:100%;height:560px;border:1px solid #ccc\">"
+             "</iframe>\n</section>\n";
     for (std::size_t i = 0; i < documents.size(); ++i) h << documentHtml(documents[i], out_dir / "charts", i);
     h << "</body></html>\n";
     const fs::path path = out_dir / "report.html";

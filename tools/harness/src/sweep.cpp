@@ -9,11 +9,12 @@
 #include "vroc/core/scene_loader.h"
 #include "vroc/core/state_hash.h"
 #include "vroc/harness/divergence.h"
+#include "vroc/harness/mpi_world.h"
 #include "vroc/harness/pareto.h"
 #include "vroc/harness/robustness.h"
-#include "vroc/harness/mpi_world.h"
 #include "vroc/harness/run_trace.h"
 #include "vroc/harness/run_trace_json.h"
+#include "vroc/harness/run_validity.h"
 #include "vroc/harness/sweep_curves.h"
 #include "vroc/harness/sweep_document.h"
 #include "vroc/harness/timing_stats.h"
@@ -42,7 +43,9 @@ WindowPlan planWindows(double dt_max, double ref_dt, double duration, double win
 
 // Mean over the windows of the largest body position error after one window, against the
 // reference trace (recorded every largest step).
-double windowError(const Scene& scene, const SelectedBackend& b, const RunTrace& ref, const WindowPlan& plan, double dt, double dt_max) {
+// A window run that is not valid names itself in `not_valid` (when given and still empty).
+double windowError(const Scene& scene, const SelectedBackend& b, const RunTrace& ref, const WindowPlan& plan, double dt,
+                   double dt_max, std::string* not_valid = nullptr) {
     if (plan.anchors.empty()) return NAN;
     double sum = 0;
     for (std::int64_t a : plan.anchors) {
@@ -53,6 +56,8 @@ double windowError(const Scene& scene, const SelectedBackend& b, const RunTrace&
         ro.initial_states = ref.states[static_cast<std::size_t>(a)];
         const RunTrace w = runBackend(*b.info, scene, b.settings, ro);
         if (!w.finite) return INFINITY;
+        if (const RunValidity v = runValidity(w); !v.valid && not_valid && not_valid->empty())
+            *not_valid = v.reason + " (in a window run)";
         sum += maxPositionError(scene, w.states.back(), ref.states[static_cast<std::size_t>(a + plan.window_coarse)]);
     }
     return sum / static_cast<double>(plan.anchors.size());
@@ -69,6 +74,7 @@ SweepStep stepFromJson(const Json& j) {
     s.robust = j.at("robust").get<bool>();
     s.failure = j.at("failure").get<std::string>();
     s.state_hash = j.at("state_hash").get<std::string>();
+    if (j.contains("not_valid")) s.not_valid = j.at("not_valid").get<std::string>();
     s.measured = j.contains("cost_wall_per_sim_s");
     if (!s.measured) return s;
     s.cost = value(j.at("cost_wall_per_sim_s"));
@@ -99,11 +105,12 @@ SweepStep measureStep(const SweepScene& in, const SelectedBackend& b, const RunT
     s.robust = verdict.ok;
     s.failure = verdict.reason;
     s.state_hash = hashToHex(stateHash(run.states.back()));
+    if (run.finite) s.not_valid = runValidity(run).reason;
     if (!measured) return s;
     const TimingSummary timing = summarizeTiming(run.step_wall_s, run.simulatedTime());
     s.cost = timing.wall_per_sim_s;
     s.step_p50_us = timing.p50_us;
-    s.window_error = windowError(scene, b, ref, plan, dt, dt_max);
+    s.window_error = windowError(scene, b, ref, plan, dt, dt_max, &s.not_valid);
     if (in.closed_form && run.finite) s.closed_form_error = std::abs(in.closed_form->measure(scene, run) - in.closed_form->expected);
     return s;
 }
@@ -138,7 +145,8 @@ void summarize(SweepResult& r) {
         for (std::size_t k = 0; k < c.steps.size(); ++k) {
             if (!c.steps[k].measured) continue;
             r.points.push_back({ci, k, false});
-            costs.push_back({c.steps[k].cost, c.steps[k].window_error});
+            const bool valid = c.steps[k].not_valid.empty();  // a point that is not valid is never on the front
+            costs.push_back({valid ? c.steps[k].cost : NAN, c.steps[k].window_error});
             dts.push_back(c.steps[k].dt);
             errors.push_back(c.steps[k].window_error);
         }

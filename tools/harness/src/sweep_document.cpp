@@ -10,6 +10,7 @@ Json optionalJson(const std::optional<double>& v) { return v ? Json(*v) : Json(n
 
 Json sweepStepJson(const SweepStep& s) {
     Json j = {{"dt_s", s.dt}, {"robust", s.robust}, {"failure", s.failure}, {"state_hash", s.state_hash}};
+    if (!s.not_valid.empty()) j["not_valid"] = s.not_valid;
     if (s.measured)
         j.update({{"cost_wall_per_sim_s", number(s.cost)}, {"window_error_m", number(s.window_error)},
                   {"closed_form_error", number(s.closed_form_error)}, {"step_p50_us", number(s.step_p50_us)}});
@@ -53,8 +54,9 @@ void addTables(const SweepResult& r, Json& doc) {
     std::vector<std::vector<Json>> rows, robust_rows, detail_rows;
     for (const SweepPoint& p : r.points) {
         const SweepStep& s = r.stepOf(p);
-        rows.push_back({r.curves[p.curve].curve.label, frameStepName(s.dt), s.dt, number(s.cost), number(s.window_error),
-                        number(s.closed_form_error), s.robust ? "pass" : "FAIL", p.on_pareto_front});
+        rows.push_back({r.curves[p.curve].curve.label, frameStepName(s.dt), s.dt, number(s.cost),
+                        number(s.window_error), number(s.closed_form_error), s.robust ? "pass" : "FAIL",
+                        p.on_pareto_front, s.not_valid.empty() ? Json("yes") : Json("not valid: " + s.not_valid)});
     }
     for (const SweepCurveResult& c : r.curves) {
         const auto& limit = c.robustness_limit_dt;
@@ -65,7 +67,9 @@ void addTables(const SweepResult& r, Json& doc) {
                                    r.target ? Json(d.meets_target ? "pass" : "FAIL") : Json(nullptr)});
     }
     doc["tables"].push_back(tableJson("sweep", "Speed and accuracy per backend and frame step",
-        {"backend", "step", "dt [s]", "cost [s/s]", "window error [m]", "closed-form error", "robust", "on Pareto front"}, rows));
+                                      {"backend", "step", "dt [s]", "cost [s/s]", "window error [m]",
+                                       "closed-form error", "robust", "on Pareto front", "valid"},
+                                      rows));
     doc["tables"].push_back(tableJson("robustness", "Robustness limit (largest step that completes without NaN, tunnelling, blow-up or collapse)",
         {"backend", "limit dt [s]", "limit", "convergence order p [-]"}, robust_rows));
     if (!detail_rows.empty())

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 namespace vroc::harness {
 namespace {
@@ -28,8 +29,9 @@ double energyFromMatrix(const std::vector<double>& d, std::size_t n, const std::
             else if (!first[i] && !first[j]) yy += v;
             else xy += v;
         }
-    // Sums over ordered pairs: xx and yy count each unordered pair twice, the diagonal is zero.
-    return 2 * xy / (double(nx) * double(ny)) - 2 * xx / (double(nx) * double(nx)) - 2 * yy / (double(ny) * double(ny));
+    // Unordered pairs: the within means over i != j are xx / (nx (nx - 1) / 2), and so on.
+    return 2 * xy / (double(nx) * double(ny)) - 2 * xx / (double(nx) * double(nx - 1)) -
+           2 * yy / (double(ny) * double(ny - 1));
 }
 
 }  // namespace
@@ -50,16 +52,31 @@ double SplitMix64::normal() {
 }
 
 double energyDistance(const std::vector<Sample>& x, const std::vector<Sample>& y) {
-    if (x.empty() || y.empty()) throw std::invalid_argument("energyDistance: empty sample");
+    if (x.size() < 2 || y.size() < 2)
+        throw std::invalid_argument("energyDistance: a sample has fewer than 2 observations");
     double xy = 0, xx = 0, yy = 0;
     for (const Sample& a : x)
         for (const Sample& b : y) xy += distance(a, b);
-    for (const Sample& a : x)
-        for (const Sample& b : x) xx += distance(a, b);
-    for (const Sample& a : y)
-        for (const Sample& b : y) yy += distance(a, b);
+    for (std::size_t i = 0; i < x.size(); ++i)
+        for (std::size_t j = i + 1; j < x.size(); ++j) xx += distance(x[i], x[j]);
+    for (std::size_t i = 0; i < y.size(); ++i)
+        for (std::size_t j = i + 1; j < y.size(); ++j) yy += distance(y[i], y[j]);
     const double n = double(x.size()), m = double(y.size());
-    return std::max(0.0, 2 * xy / (n * m) - xx / (n * n) - yy / (m * m));
+    // Not clamped at 0: a clamp would bring back a positive bias.
+    return 2 * xy / (n * m) - 2 * xx / (n * (n - 1)) - 2 * yy / (m * (m - 1));
+}
+
+double marginalWasserstein1(const std::vector<Sample>& x, const std::vector<Sample>& y) {
+    if (x.empty() || y.empty()) throw std::invalid_argument("marginalWasserstein1: empty sample");
+    double sum = 0;
+    for (std::size_t k = 0; k < x.front().size(); ++k) {
+        std::vector<double> xk, yk;
+        for (const Sample& s : x) xk.push_back(s[k]);
+        for (const Sample& s : y) yk.push_back(s[k]);
+        const double w = wasserstein1(std::move(xk), std::move(yk));
+        sum += w * w;
+    }
+    return std::sqrt(sum);
 }
 
 double wasserstein1(std::vector<double> x, std::vector<double> y) {
@@ -83,6 +100,8 @@ double wasserstein1(std::vector<double> x, std::vector<double> y) {
 
 PermutationTest energyPermutationTest(const std::vector<Sample>& x, const std::vector<Sample>& y, int permutations,
                                       std::uint64_t seed) {
+    if (x.size() < 2 || y.size() < 2)
+        throw std::invalid_argument("energyPermutationTest: a sample has fewer than 2 observations");
     const std::size_t n = x.size() + y.size();
     std::vector<const Sample*> pooled;
     for (const Sample& s : x) pooled.push_back(&s);
@@ -93,15 +112,47 @@ PermutationTest energyPermutationTest(const std::vector<Sample>& x, const std::v
     std::vector<char> first(n, 0);
     std::fill(first.begin(), first.begin() + static_cast<std::ptrdiff_t>(x.size()), 1);
     PermutationTest t;
-    t.statistic = std::max(0.0, energyFromMatrix(d, n, first));
+    t.statistic = energyFromMatrix(d, n, first);
     t.permutations = permutations;
     SplitMix64 rng(seed);
     int as_large = 0;
     // Ties (e.g. a deterministic observable, all equal) count as "as large": p stays 1.
-    const double tolerance = 1e-12 * std::max(1.0, t.statistic);
+    const double tolerance = 1e-12 * std::max(1.0, std::abs(t.statistic));
     for (int p = 0; p < permutations; ++p) {
         for (std::size_t i = n - 1; i > 0; --i) std::swap(first[i], first[rng.next() % (i + 1)]);
         if (energyFromMatrix(d, n, first) >= t.statistic - tolerance) ++as_large;
+    }
+    t.p_value = (1.0 + as_large) / (1.0 + permutations);
+    return t;
+}
+
+PairedTest pairedSignFlipTest(const std::vector<double>& a, const std::vector<double>& b, int permutations,
+                              std::uint64_t seed) {
+    if (a.size() != b.size() || a.empty())
+        throw std::invalid_argument("pairedSignFlipTest: expected equal, non-empty samples");
+    std::vector<double> d(a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) d[k] = a[k] - b[k];
+    const double n = double(d.size());
+    PairedTest t;
+    t.pairs = d.size();
+    t.mean_difference = std::accumulate(d.begin(), d.end(), 0.0) / n;
+    t.permutations = permutations;
+    const double observed = std::abs(t.mean_difference);
+    // Ties count as "as large" (all differences 0: p = 1); the tolerance absorbs summation order.
+    double scale = 0;
+    for (double v : d) scale += std::abs(v) / n;
+    const double tolerance = 1e-12 * std::max(1.0, scale);
+    SplitMix64 rng(seed);
+    int as_large = 0;
+    for (int p = 0; p < permutations; ++p) {
+        double sum = 0;
+        std::uint64_t bits = 0;
+        for (std::size_t k = 0; k < d.size(); ++k) {
+            if (k % 64 == 0) bits = rng.next();
+            sum += (bits & 1) ? d[k] : -d[k];
+            bits >>= 1;
+        }
+        if (std::abs(sum / n) >= observed - tolerance) ++as_large;
     }
     t.p_value = (1.0 + as_large) / (1.0 + permutations);
     return t;

@@ -126,6 +126,14 @@ struct BackendInfo {
     /// where it has it, as key=value pairs applied over its defaults (the user's --set still wins).
     /// Null: the engine has no such settings (it runs at its defaults on either footing).
     std::vector<std::pair<std::string, std::string>> (*equal_footing)(int substeps) = nullptr;
+    /// The capabilities under these settings, for an engine whose settings change what it represents
+    /// (mujoco.cone=elliptic gives Coulomb's cone). Null: `capabilities`, whatever the settings.
+    BackendCapabilities (*capabilities_with)(const Settings& settings) = nullptr;
+
+    /// capabilities_with(settings) when set, else capabilities.
+    BackendCapabilities capabilitiesFor(const Settings& settings) const {
+        return capabilities_with ? capabilities_with(settings) : capabilities;
+    }
 };
 
 }  // namespace vroc

@@ -30,6 +30,9 @@ inline constexpr const char* kPenetrationRecovered = "penetration_recovered";
 inline constexpr const char* kInternalStepCap = "internal_step_cap";
 /// A contact system was near singular; a fallback solve was used.
 inline constexpr const char* kIllConditionedSolve = "ill_conditioned_solve";
+/// The engine left out contacts or constraint rows it had found because a buffer was full: the
+/// run is not the engine's physics, and the harness marks it not valid (harness/run_validity.h).
+inline constexpr const char* kContactsDropped = "contacts_dropped";
 
 /// Every shared statistic name.
 const std::vector<std::string>& sharedStatistics();

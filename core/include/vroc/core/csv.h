@@ -61,6 +61,28 @@ inline std::vector<std::string_view> splitLine(std::string_view line) {
     }
 }
 
+/// The fields of one line as csv::field writes them: quoted fields (RFC 4180, "" for a quote) are
+/// unquoted. A trailing '\r' is dropped. Returns false for a quote left open (a truncated line).
+inline bool splitQuotedLine(std::string_view line, std::vector<std::string>& fields) {
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    fields.assign(1, std::string());
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+            fields.back() += '"';
+            ++i;
+        } else if (c == '"') {
+            quoted = !quoted;
+        } else if (c == ',' && !quoted) {
+            fields.emplace_back();
+        } else {
+            fields.back() += c;
+        }
+    }
+    return !quoted;
+}
+
 /// Parses a whole field as a double (decimal or exponent notation, as appendNumber writes; also
 /// "inf" and "nan", which callers that need finite numbers must reject). No spaces, no '+'.
 inline bool parseNumber(std::string_view text, double& value) {

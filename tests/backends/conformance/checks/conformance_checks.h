@@ -13,6 +13,7 @@
 #include "checks/shape_support_check.h"
 #include "checks/shipped_scenes_check.h"
 #include "checks/worker_count_check.h"
+#include "conformance_backends.h"
 
 namespace vroc::conformance {
 
@@ -23,7 +24,12 @@ struct ConformanceCheck {
 
 inline const std::vector<ConformanceCheck>& conformanceChecks() {
     static const std::vector<ConformanceCheck> list{
-        {"shipped_scenes", [](const BackendInfo& b) { return checkShippedScenes(b); }},
+        {"shipped_scenes",
+         [](const BackendInfo& b) {
+             ShippedScenesCheckOptions options;
+             options.stress_scenes = runsStressScenes(b.name);
+             return checkShippedScenes(b, options);
+         }},
         {"landing", [](const BackendInfo& b) { return checkLanding(b); }},
         {"worker_count", [](const BackendInfo& b) { return checkWorkerCountDeterminism(b); }},
         {"impulse", &checkImpulse},

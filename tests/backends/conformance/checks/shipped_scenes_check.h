@@ -12,6 +12,7 @@ struct ShippedScenesCheckOptions {
     double kick_speed = 0.3;   ///< [m/s] upward (against gravity) speed given to the kicked body at t = 0
     double min_rise = 0.0015;  ///< [m] its centre of mass must rise at least this much ...
     double max_time = 0.1;     ///< [s] ... and, with gravity, come back down within this time
+    bool stress_scenes = true;  ///< also the scenes under scenes/stress/
     // At 1/60 s frames the first frame lifts the body 3.6 mm in exact flight and 2.3 mm in
     // symplectic Euler (Bullet, ODE: one step per frame); the upward velocity is 0.3 - g t at a
     // frame's end in either, negative from t = 0.031 s on. Both show within the 2 finite frames;

@@ -14,6 +14,7 @@
 #include "vroc/harness/check_suite.h"
 #include "vroc/harness/metrics_document.h"
 #include "vroc/harness/run_pool.h"
+#include "vroc/harness/run_validity.h"
 #include "vroc/harness/scene_support.h"
 
 namespace vroc::harness {
@@ -36,6 +37,9 @@ struct CheckCell {
     double measured = NAN;
     std::optional<bool> pass;      ///< empty: reported, not judged (or not run)
     SceneSupport support;          ///< Unsupported: the scenario was not run on this backend
+    /// Not valid: the engine dropped contacts in this run (a full buffer); the cell is reported,
+    /// never judged. A run that went non-finite stays valid, and fails: that is the backend's.
+    RunValidity validity;
 };
 
 /// One metric of the suite and its cell per backend (CheckSuiteResult::backends order).

@@ -16,6 +16,7 @@
 #include "vroc/harness/metrics_document.h"
 #include "vroc/harness/run_pool.h"
 #include "vroc/harness/run_trace.h"
+#include "vroc/harness/run_validity.h"
 #include "vroc/harness/timing_stats.h"
 
 namespace vroc::harness {
@@ -66,6 +67,7 @@ struct EventSummary {
 
 /// What one backend's runs measure.
 struct CompareBackendSummary {
+    RunValidity validity;                   ///< of the main and twin runs: not valid ones never vote
     TimingSummary timing;                   ///< of the main run's steps
     Histogram step_times_us;                ///< [µs] per-step wall time histogram (30 bins)
     double penetration_max = 0;             ///< [m] over frames

@@ -65,6 +65,9 @@ struct SweepStep {
     bool robust = false;                  ///< completed without NaN, tunnelling, blow-up or collapse
     std::string failure;                  ///< why not robust
     std::string state_hash;               ///< of the last frame
+    /// Empty, or why the run (or one of its windows) is not the engine's physics (run_validity.h):
+    /// such a point is shown, marked, and never on the Pareto front.
+    std::string not_valid;
 };
 
 /// One (curve, model detail level) run at the largest step.
