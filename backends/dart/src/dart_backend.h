@@ -94,6 +94,7 @@ private:
     std::vector<BodyRecord> bodies_;
     std::vector<FrameState> saved_;  ///< states before the step in progress (growing contact buffer)
     std::size_t contact_capacity_ = 1000;
+    bool mesh_for_hulls_ = false;  ///< spheres and hulls in one scene: FCL collides meshes (dart_backend.cpp)
     EventDetector events_;
     double time_ = 0.0;  ///< [s] sum of frame dts
     std::uint64_t frames_ = 0, internal_steps_ = 0, nonfinite_ = 0, step_cap_ = 0, contact_cap_ = 0,

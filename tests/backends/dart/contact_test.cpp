@@ -105,5 +105,20 @@ TEST(DartContact, ALandingIsOneEventWithTheImpulseOfTheBounce) {
     EXPECT_NEAR(e.time, std::sqrt(2 * 0.5 / kG), 2.0 / 1000);
 }
 
+// FCL's own sphere misses a triangle-mesh hull: a 0.1 m ball dropped on a static 0.5 m-tall hull
+// block must rest on its top face (centre at 0.5 + 0.1 m), not fall through to the floor.
+TEST(DartContact, ABallRestsOnAStaticHullInsteadOfFallingThrough) {
+    Scene scene = bareScene();
+    const int m = addMaterial(scene, 0.0, 0.5);
+    addFloor(scene, m);
+    addBody(scene, "block", Shape::convexHull(ConvexPolyhedron::box(Vec3(0.5, 0.5, 0.25))), at(Vec3(0, 0, 0.25)), m,
+            true);
+    const int ball = addBall(scene, "ball", 0.1, 1.0, Vec3(0, 0, 1.0), m);
+    auto backend = makeDart(scene);
+    for (int f = 0; f < 60; ++f) backend->stepFrame(scene.frame_dt);
+    EXPECT_NEAR(backend->bodyState(ball).pose.position.z(), 0.6, 2e-3);
+    EXPECT_EQ(backend->statistics().at("dart.mesh_collision_for_hulls"), 1.0);
+}
+
 }  // namespace
 }  // namespace vroc::test
