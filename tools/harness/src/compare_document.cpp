@@ -105,8 +105,7 @@ Json consensusJson(const CompareResult& c, const ConsensusRow& row) {
 Json consensusTable(const CompareResult& c) {
     std::vector<std::vector<Json>> rows;
     for (const ConsensusRow& row : c.consensus) {
-        std::string agreeing;
-        for (const std::string& a : row.result.agreeing) agreeing += (agreeing.empty() ? "" : ", ") + a;
+        const std::string agreeing = joinText(row.result.agreeing);
         std::string value_text;
         for (std::size_t i = 0; i < row.values.size(); ++i) {
             char v[64];
@@ -114,8 +113,7 @@ Json consensusTable(const CompareResult& c) {
             value_text += v;
         }
         if (row.values.empty()) value_text = "(pairwise: largest body distance between final states)";
-        std::string left_out;
-        for (const std::string& l : row.result.left_out) left_out += (left_out.empty() ? "" : "; ") + l;
+        const std::string left_out = joinText(row.result.left_out, "; ");
         rows.push_back(
             {row.observable, value_text, row.result.verdict, agreeing, left_out, row.floor, row.floor_reason});
     }

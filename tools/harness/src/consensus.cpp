@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vroc/harness/metrics_document.h"
+
 namespace vroc::harness {
 namespace {
 
@@ -25,12 +27,6 @@ std::vector<std::size_t> uninformativeOf(const ConsensusInput& in, const std::ve
     return out;
 }
 
-std::string joined(const std::vector<std::string>& v) {
-    std::string s;
-    for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
-    return s;
-}
-
 }  // namespace
 
 ConsensusResult consensus(const ConsensusInput& in) {
@@ -49,7 +45,7 @@ ConsensusResult consensus(const ConsensusInput& in) {
     idx.erase(std::remove_if(idx.begin(), idx.end(),
                              [&](std::size_t i) { return std::find(quiet.begin(), quiet.end(), i) != quiet.end(); }),
               idx.end());
-    const std::string suffix = out.uninformative.empty() ? "" : " (uninformative: " + joined(out.uninformative) + ")";
+    const std::string suffix = out.uninformative.empty() ? "" : " (uninformative: " + joinText(out.uninformative) + ")";
     if (idx.size() < 2) {
         out.verdict = "too few values" + suffix;
         for (std::size_t i : idx) out.agreeing.push_back(in.backends[i]);
@@ -77,7 +73,7 @@ ConsensusResult consensus(const ConsensusInput& in) {
     if (2 * group.size() > idx.size() && group.size() >= 2) {
         for (std::size_t i : idx)
             if (std::find(group.begin(), group.end(), i) == group.end()) out.outliers.push_back(in.backends[i]);
-        out.verdict = "outlier: " + joined(out.outliers) + suffix;
+        out.verdict = "outlier: " + joinText(out.outliers) + suffix;
         return out;
     }
     out.verdict = "no majority" + suffix;

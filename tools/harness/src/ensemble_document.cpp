@@ -58,12 +58,6 @@ bool tested(const EnsembleTest& t) {
     return t.verdict != EnsembleVerdict::not_reached && t.verdict != EnsembleVerdict::too_few_members;
 }
 
-std::string join(const std::vector<std::string>& list, const char* separator = ", ") {
-    std::string s;
-    for (const std::string& x : list) s += (s.empty() ? "" : separator) + x;
-    return s;
-}
-
 std::string formatted(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3g", v);
@@ -90,7 +84,7 @@ std::map<std::string, PairVerdicts> verdicts(const EnsembleResult& r) {
                 v.within_resolution.push_back(t.observable);
                 break;
             case EnsembleVerdict::not_reached:
-                v.not_reached.push_back(t.observable + " (by " + join(t.not_reached_by) + ")");
+                v.not_reached.push_back(t.observable + " (by " + joinText(t.not_reached_by) + ")");
                 break;
             case EnsembleVerdict::too_few_members:
                 v.too_few.push_back(t.observable);
@@ -155,7 +149,7 @@ std::pair<std::string, std::string> digestCell(const EnsembleTest& t) {
         case EnsembleVerdict::not_distinguishable:
             return {"no: " + formatted(t.effect), "eff-none"};
         case EnsembleVerdict::not_reached:
-            return {"not reached by " + join(t.not_reached_by), "eff-na"};
+            return {"not reached by " + joinText(t.not_reached_by), "eff-na"};
         case EnsembleVerdict::too_few_members:
             return {"too few members (" + std::to_string(t.members_a) + "/" + std::to_string(t.members_b) + ")",
                     "eff-na"};
@@ -239,11 +233,11 @@ Json droppedTable(const EnsembleResult& r) {
                 members.push_back(std::to_string(d.member));
                 reasons.insert(d.reason);
             }
-            groups[{join(members), join(std::vector<std::string>(reasons.begin(), reasons.end()), "; ")}].push_back(
+            groups[{joinText(members), joinText(std::vector<std::string>(reasons.begin(), reasons.end()), "; ")}].push_back(
                 ob.id);
         }
         for (const auto& [key, obs] : groups)
-            rows.push_back({r.backends[bi].info->name, obs.size() == r.observables.size() ? "all" : join(obs),
+            rows.push_back({r.backends[bi].info->name, obs.size() == r.observables.size() ? "all" : joinText(obs),
                             key.first, key.second});
     }
     return tableJson("ensemble-dropped", "Members left out of the tests, per backend: which observables, and why",
@@ -261,7 +255,7 @@ std::string droppedSummary(const EnsembleResult& r) {
         std::vector<std::string> names;
         for (int m : members) names.push_back(std::to_string(m));
         out += (out.empty() ? "" : "; ") + r.backends[bi].info->name + " member" + (members.size() > 1 ? "s " : " ") +
-               join(names) + " (table ensemble-dropped)";
+               joinText(names) + " (table ensemble-dropped)";
     }
     return out.empty() ? "No member was dropped." : "Dropped from some tests: " + out + ".";
 }
@@ -375,13 +369,13 @@ Json ensembleDocument(const EnsembleResult& r) {
 }
 
 std::string ensembleVerdictText(const EnsembleResult& r) {
-    auto list = [](const std::vector<std::string>& l) { return l.empty() ? std::string("none") : join(l); };
+    auto list = [](const std::vector<std::string>& l) { return l.empty() ? std::string("none") : joinText(l); };
     std::string out;
     for (const auto& [pair, v] : verdicts(r)) {
         out += pair + ": distinguishable by " + list(v.distinguishable) + "; not by " + list(v.not_distinguishable);
-        if (!v.within_resolution.empty()) out += "; within resolution: " + join(v.within_resolution);
-        if (!v.not_reached.empty()) out += "; not reached: " + join(v.not_reached);
-        if (!v.too_few.empty()) out += "; too few members: " + join(v.too_few);
+        if (!v.within_resolution.empty()) out += "; within resolution: " + joinText(v.within_resolution);
+        if (!v.not_reached.empty()) out += "; not reached: " + joinText(v.not_reached);
+        if (!v.too_few.empty()) out += "; too few members: " + joinText(v.too_few);
         out += "\n";
     }
     return out + droppedSummary(r) + "\n";

@@ -70,4 +70,10 @@ Json readDocument(const std::filesystem::path& path) {
     return doc;
 }
 
+std::string joinText(const std::vector<std::string>& parts, const char* separator) {
+    std::string s;
+    for (const std::string& p : parts) s += (s.empty() ? "" : separator) + p;
+    return s;
+}
+
 }  // namespace vroc::harness

@@ -48,4 +48,7 @@ Json readDocument(const std::filesystem::path& path);
 /// A JSON number, or null when not finite.
 Json number(double value);
 
+/// The parts joined with `separator` between them ("a, b, c"); "" for none.
+std::string joinText(const std::vector<std::string>& parts, const char* separator = ", ");
+
 }  // namespace vroc::harness
