@@ -24,6 +24,7 @@ echo "  trajectory.csv  every virtual body's pose and velocity per frame"
 echo "  events.csv      every collision: time, bodies, contact point, normal, impulse"
 echo "  impacts.wav     the collisions as sound (modal synthesis per material; impacts_events.csv beside it)"
 echo "  run.json        settings, timings (per-step p50/p90/p99), state_hash, build facts"
+echo "  view.html       the run's 3D replay for a browser (docs/viewer.md)"
 
 # The see-through display loop (tools/play, docs/hmd.md): a tracked real notepad, driven by a
 # device plugin, bats a row of balls; frames rendered offscreen, impacts as sound.

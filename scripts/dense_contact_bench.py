@@ -10,6 +10,8 @@ speed-accuracy ladder; every native configuration runs on one core, like the ref
     native-it4     ... native.threads=1 native.contact_iterations=4        (4 contact sweeps, default 10)
     native-shock0  ... native.threads=1 native.shock_iterations=0          (no shock propagation)
     native-shock8  ... native.threads=1 native.shock_per_level=false       (8 shock sweeps a level, however tall)
+    native-ring0   ... native.threads=1 native.protection_ring=0           (local protection solves, ring 0)
+    native-ring2   ... native.threads=1 native.protection_ring=2           (local protection solves, ring 2)
     native-spec    ... native.threads=1 native.touching=speculative        (issue 22's experimental regime)
     native-soft    ... native.threads=1 native.touching=soft               (the same with Box2D v3's soft step)
     bullet         vroc run ... --backend bullet --set bullet.substeps=1  (Bullet at its own default)
@@ -93,6 +95,8 @@ CONFIGS = {
     "native-it4": ("native", ["native.threads=1", "native.contact_iterations=4"], "native (contact_iterations=4)"),
     "native-shock0": ("native", ["native.threads=1", "native.shock_iterations=0"], "native (shock_iterations=0)"),
     "native-shock8": ("native", ["native.threads=1", "native.shock_per_level=false"], "native (shock_per_level=false)"),
+    "native-ring0": ("native", ["native.threads=1", "native.protection_ring=0"], "native (protection_ring=0)"),
+    "native-ring2": ("native", ["native.threads=1", "native.protection_ring=2"], "native (protection_ring=2)"),
     # Issue 22's experimental regime (docs/native-dynamics.md, "Two regimes"), beside the default.
     "native-spec": ("native", ["native.threads=1", "native.touching=speculative"],
                     "native (threads=1, touching=speculative)"),
@@ -193,7 +197,8 @@ def run_process(cmd, timeout):
 
 def vroc_run(args, scene, label, out_dir):
     backend, sets, _ = CONFIGS[label]
-    cmd = [args.vroc, "run", scene.path, "--backend", backend, "--duration", repr(args.duration), "--out", out_dir, "-q"]
+    cmd = [args.vroc, "run", scene.path, "--backend", backend, "--duration", repr(args.duration), "--out", out_dir, "-q",
+           "--no-view"]
     for s in sets:
         cmd += ["--set", s]
     t0 = time.monotonic()
@@ -211,7 +216,7 @@ def vroc_compare_penetration(args, scene, label, out_dir):
     `vroc compare --backends B` (one re-anchored window of one frame: the cheapest compare)."""
     backend, sets, _ = CONFIGS[label]
     cmd = [args.vroc, "compare", scene.path, "--backends", backend, "--duration", repr(args.duration),
-           "--windows", "1", "--window", repr(scene.frame_dt), "--out", out_dir, "-q"]
+           "--windows", "1", "--window", repr(scene.frame_dt), "--out", out_dir, "-q", "--no-view"]
     for s in sets:
         cmd += ["--set", s]
     status, err = run_process(cmd, args.compare_timeout)

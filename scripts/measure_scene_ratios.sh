@@ -20,6 +20,10 @@ out_csv="docs/benchmarks/scene_ratios_${machine}.csv"
 runs=$(mktemp -d /tmp/vroc-scene-ratios.XXXXXX)
 trap 'rm -rf "$runs"' EXIT
 scenes=${SCENES:-$(ls scenes/*.json)}
+# No view.html per run (its cost is not the engine's), when this build writes one.
+no_view=()
+run_help=$("$vroc" run --help 2>&1 || true)
+[[ $run_help == *--no-view* ]] && no_view=(--no-view)
 
 p50_and_steps() {   # run.json -> "p50 steps"
     python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print("%.3f" % r["step_wall_time_us"]["p50"], r["steps"])' "$1"
@@ -35,7 +39,7 @@ for scene in $scenes; do
     for backend in native bullet; do
         extra=()   # both on one core: Bullet is single-threaded, native is told so
         [[ $backend == native ]] && extra=(--set native.threads=1)
-        if "$vroc" run "$scene" --backend "$backend" --duration "$d" "${extra[@]}" \
+        if "$vroc" run "$scene" --backend "$backend" --duration "$d" "${extra[@]}" "${no_view[@]}" \
                --out "$runs/$name-$backend" -q 2>"$runs/$name-$backend.err"; then
             read -r p50[$backend] steps[$backend] < <(p50_and_steps "$runs/$name-$backend/run.json")
         else

@@ -54,7 +54,7 @@ class Run:
 def run_scene(args, scene, backend, duration):
     name = os.path.splitext(os.path.basename(scene))[0]
     out = os.path.join(args.runs, f"{name}-{backend}")
-    cmd = [args.vroc, "run", scene, "--backend", backend, "--duration", str(duration), "--out", out, "-q"]
+    cmd = [args.vroc, "run", scene, "--backend", backend, "--duration", str(duration), "--out", out, "-q", "--no-view"]
     if backend == "native":
         cmd += ["--set", "native.threads=1"]
     proc = subprocess.run(cmd, capture_output=True, text=True)

@@ -28,6 +28,15 @@ def displacement(run_dir):
     return max(math.dist(first[b], last[b]) for b in last), max(math.dist(at1[b], last[b]) for b in last)
 
 
+def no_view_flag(binary, known={}):
+    """["--no-view"] if `binary run` takes it (no view.html: its cost is not the engine's), else []: a
+    BEFORE build may predate the flag."""
+    if binary not in known:
+        help_text = subprocess.run([binary, "run", "--help"], capture_output=True, text=True).stdout
+        known[binary] = ["--no-view"] if "--no-view" in help_text else []
+    return known[binary]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--before", required=True, help="vroc binary of the build before")
@@ -50,7 +59,7 @@ def main():
                 out = os.path.join(work, f"{name}_{k}")
                 subprocess.run(["rm", "-rf", out])
                 rc = subprocess.run([binary, "run", path, "--backend", backend, "--duration", str(a.duration),
-                                     "--out", out, "-q"], capture_output=True).returncode
+                                     "--out", out, "-q"] + no_view_flag(binary), capture_output=True).returncode
                 if rc != 0:
                     sys.exit(f"{binary} run {path} --backend {backend} failed with exit code {rc}")
                 j = json.load(open(os.path.join(out, "run.json")))

@@ -130,7 +130,7 @@ def main():
         walls = {}
         for ranks in (1, 2):
             cmd = [mpirun, "--oversubscribe", "-n", str(ranks), vroc, "ensemble", scene, "--backends", "native,bullet",
-                   "--members", str(a.tiny_members // 2), "--duration", str(1 / 60), "--permutations", "99", "-q",
+                   "--members", str(a.tiny_members // 2), "--duration", str(1 / 60), "--permutations", "99", "-q", "--no-view",
                    "-o", os.path.join(work, f"tiny-{ranks}")]
             walls[ranks] = statistics.median(timed(cmd, env) for _ in range(a.repeats))
         launch = statistics.median(timed([mpirun, "--oversubscribe", "-n", "2", "true"], env) for _ in range(a.repeats))

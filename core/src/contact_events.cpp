@@ -4,7 +4,6 @@
 namespace vroc {
 
 void PairContacts::addImpulse(const Vec3& point, const Vec3& normal_a_to_b, double j) {
-    in_contact = true;
     impulse += j;
     point_sum += point;
     ++point_count;

@@ -51,7 +51,7 @@ config=$(find "$p" -path '*/cmake/vroc/vrocConfig.cmake' | head -n 1)
 [ -n "$config" ] || fail "no vrocConfig.cmake under the prefix"
 libdir=$(dirname "$(dirname "$(dirname "$config")")")
 libdir=${libdir#"$p"/}
-for f in bin/vroc include/vroc/core/backend.h include/vroc/core/backend_registry.h include/vroc/harness/compare.h \
+for f in bin/vroc include/vroc/core/backend.h include/vroc/core/backend_registry.h include/vroc/harness/commands/compare.h \
          include/vroc/plugin/vroc_device_plugin.h include/vroc/plugin_sdk/plugin_sdk.h include/vroc/native/native_backend.h \
          "$libdir/libvroc_core.a" "$libdir/libvroc_harness.a" "$libdir/libvroc_plugin_support.a" \
          "$libdir/cmake/vroc/vrocConfigVersion.cmake" "$libdir/cmake/vroc/vroc-core-targets.cmake" \

@@ -11,9 +11,9 @@
 #include "harness_test_backends.h"
 #include "subprocess.h"
 #include "test_scenes.h"
-#include "vroc/harness/check.h"
-#include "vroc/harness/check_suite.h"
-#include "vroc/harness/metrics_document.h"
+#include "vroc/harness/commands/check.h"
+#include "vroc/harness/commands/check_suite.h"
+#include "vroc/harness/documents/metrics_document.h"
 
 namespace vroc::harness {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "vroc/harness/consensus.h"
-#include "vroc/harness/scene_support.h"
+#include "vroc/harness/runs/scene_support.h"
+#include "vroc/harness/statistics/consensus.h"
 
 namespace vroc::harness {
 namespace {

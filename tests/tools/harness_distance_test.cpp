@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "vroc/harness/detail_levels.h"
-#include "vroc/harness/neutral_distance.h"
+#include "vroc/harness/commands/detail_levels.h"
+#include "vroc/harness/metrics/neutral_distance.h"
 
 namespace vroc::harness {
 namespace {

@@ -14,9 +14,9 @@
 #include "test_scenes.h"
 #include "vroc/core/backend_vocabulary.h"
 #include "vroc/core/scene_loader.h"
-#include "vroc/harness/ensemble.h"
-#include "vroc/harness/ensemble_document.h"
-#include "vroc/harness/html_report.h"
+#include "vroc/harness/commands/ensemble.h"
+#include "vroc/harness/documents/ensemble_document.h"
+#include "vroc/harness/documents/html_report.h"
 
 namespace vroc::harness {
 namespace {

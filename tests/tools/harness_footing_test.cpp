@@ -2,8 +2,12 @@
 // The footing of a comparison (issue 23; docs/harness.md, "Footing"): which settings the equal
 // footing gives each backend and in what order they apply (test backends), and that it really
 // changes the engines' internal step: free fall on each reference at the equal footing follows
-// semi-implicit Euler at frame_dt / K in closed form (through the built program).
+// semi-implicit Euler at frame_dt / K in closed form (through the built program). With both
+// footings side by side (`--footing both`), every backend runs twice in one report, each run on
+// its own footing and labelled with it.
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -13,8 +17,12 @@
 #include "subprocess.h"
 #include "test_scenes.h"
 #include "vroc/core/errors.h"
-#include "vroc/harness/backend_selection.h"
-#include "vroc/harness/metrics_document.h"
+#include "vroc/harness/commands/check.h"
+#include "vroc/harness/commands/compare.h"
+#include "vroc/harness/documents/check_document.h"
+#include "vroc/harness/documents/compare_document.h"
+#include "vroc/harness/documents/metrics_document.h"
+#include "vroc/harness/runs/backend_selection.h"
 
 namespace vroc::harness {
 namespace {
@@ -121,6 +129,162 @@ TEST(HarnessFooting, EqualFootingGivesEveryReferenceTheSameInternalStep) {
         const double z = heightAt(dir / "defaults" / ref / "trajectory.csv", frame, frame_dt);
         EXPECT_GT(std::abs(z - euler(k)), 1e-3) << ref;
     }
+}
+
+/// Semi-implicit Euler flight in `test-substepped.substeps` steps a frame (1 by default); its
+/// equal footing sets the count. Its error against exact flight is g (dt / k) t / 2 in closed form,
+/// so each run's position says which footing it ran on.
+class SubsteppedFlight final : public Backend {
+public:
+    SubsteppedFlight(const Scene& scene, int substeps) : inner_(scene, false), substeps_(substeps) {}
+    void stepFrame(double dt) override {
+        for (int k = 0; k < substeps_; ++k) inner_.stepFrame(dt / substeps_);
+    }
+    double time() const override { return inner_.time(); }
+    int bodyCount() const override { return inner_.bodyCount(); }
+    BodyState bodyState(int body) const override { return inner_.bodyState(body); }
+    void setBodyState(int body, const BodyState& state) override { inner_.setBodyState(body, state); }
+    void applyImpulse(int body, const Vec3& impulse, const Vec3& point) override {
+        inner_.applyImpulse(body, impulse, point);
+    }
+    std::vector<CollisionEvent> takeEvents() override { return inner_.takeEvents(); }
+    WarningCounts warnings() const override { return inner_.warnings(); }
+    Statistics statistics() const override { return inner_.statistics(); }
+
+private:
+    harness_test::FlightBackend inner_;
+    int substeps_;
+};
+
+void registerSubsteppedBackend() {
+    harness_test::registerTestBackends();
+    if (BackendRegistry::global().find("test-substepped")) return;
+    BackendInfo info = *BackendRegistry::global().find("test-euler");
+    info.name = "test-substepped";
+    info.settings = {{"test-substepped.substeps", SettingSpec::Type::Integer, "1", 1, 100, {}, "steps per frame"}};
+    info.equal_footing = [](int substeps) -> std::vector<std::pair<std::string, std::string>> {
+        return {{"test-substepped.substeps", std::to_string(substeps)}};
+    };
+    info.create = [](const Scene& scene, const Settings& settings) -> std::unique_ptr<Backend> {
+        return std::make_unique<SubsteppedFlight>(scene,
+                                                  static_cast<int>(settings.integer("test-substepped.substeps")));
+    };
+    BackendRegistry::global().add(info);
+}
+
+std::size_t checkRow(const CheckSuiteResult& r, const std::string& id) {
+    for (std::size_t i = 0; i < r.rows.size(); ++i)
+        if (r.rows[i].metric.id == id) return i;
+    ADD_FAILURE() << "no check row " << id;
+    return 0;
+}
+
+TEST(HarnessFooting, BothFootingsRunEveryBackendTwiceEachLabelledWithItsFooting) {
+    registerSubsteppedBackend();
+    constexpr int k = 4;
+    const auto backends = selectBackendsOnBothFootings("test-substepped,test-exact", {}, k);
+    ASSERT_EQ(backends.size(), 4u);
+    const std::vector<std::string> labels = {"test-substepped (own defaults)", "test-substepped (equal footing)",
+                                             "test-exact (own defaults)", "test-exact (equal footing)"};
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(backends[i].label(), labels[i]);
+        EXPECT_EQ(backends[i].footing.kind, i % 2 == 0 ? Footing::Kind::Defaults : Footing::Kind::Equal) << labels[i];
+    }
+    EXPECT_EQ(backends[0].settings.text("test-substepped.substeps"), "1");
+    EXPECT_EQ(backends[1].settings.text("test-substepped.substeps"), std::to_string(k));
+
+    // compare: each run's final height is semi-implicit Euler's at its own step, frame_dt / steps,
+    // from the flight scene (z0 = 100 m, vz0 = 3 m/s, g = 10 m/s^2, frame 0.01 s) after 1 s.
+    CompareOptions o;
+    o.duration = 1.0;
+    o.windows = 2;
+    o.window = 0.1;
+    o.write_csv = false;
+    o.progress = false;
+    const Scene scene = harness_test::flightScene();
+    const CompareResult c = compareScene(scene, backends, o, {});
+    ASSERT_EQ(c.runs.size(), 4u);
+    auto euler = [](int steps_per_frame) {
+        const double dt = 0.01 / steps_per_frame, n = 100.0 * steps_per_frame;
+        return 100 + 3 * n * dt - 10 * dt * dt * n * (n + 1) / 2;
+    };
+    const double exact = 100 + 3 * 1.0 - 10 * 1.0 / 2;
+    const std::vector<double> expected = {euler(1), euler(k), exact, exact};
+    for (std::size_t i = 0; i < 4; ++i)
+        EXPECT_NEAR(c.runs[i].main.states.back()[0].pose.position.z(), expected[i], 1e-9) << labels[i];
+
+    // The document: every run under its own key with its footing; tables and verdicts use labels.
+    const Json doc = compareDocument(c, "test");
+    const std::vector<std::string> keys = {"test-substepped-defaults", "test-substepped-equal", "test-exact-defaults",
+                                           "test-exact-equal"};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const std::string footing = i % 2 == 0 ? "defaults" : "equal";
+        EXPECT_EQ(doc["backends"][i]["label"], labels[i]);
+        EXPECT_EQ(doc["backends"][i]["footing"]["kind"], footing) << labels[i];
+        ASSERT_TRUE(doc["results"].contains(keys[i])) << doc["results"].dump();
+        EXPECT_EQ(doc["results"][keys[i]]["footing"], footing) << keys[i];
+        EXPECT_EQ(doc["results"][keys[i]]["label"], labels[i]);
+    }
+    EXPECT_EQ(doc["backends"][1]["footing"]["settings"]["test-substepped.substeps"], std::to_string(k));
+    std::vector<std::string> summary_rows;
+    for (const Json& t : doc["tables"])
+        if (t["id"] == "summary")
+            for (const Json& row : t["rows"]) summary_rows.push_back(row[0].get<std::string>());
+    EXPECT_EQ(summary_rows, labels);
+    // Final positions: exact flight is the same on both footings; substepped Euler is 5 cm off on its
+    // own defaults (g dt T / 2) and 1.25 cm on the equal footing, far above the 1 mm floor. The
+    // verdict names the agreeing runs with their footings.
+    bool found = false;
+    for (const Json& row : doc["results"]["consensus"])
+        if (row["observable"] == "final positions [m]") {
+            found = true;
+            EXPECT_EQ(row["agreeing"], Json({"test-exact (own defaults)", "test-exact (equal footing)"})) << row.dump();
+        }
+    EXPECT_TRUE(found);
+
+    // check: the ballistic scenario's euler-ratio is 1 at one step a frame and 1/k at k steps.
+    CheckOptions co;
+    co.only = {"ballistic"};
+    co.progress = false;
+    const auto pair = selectBackendsOnBothFootings("test-substepped", {}, k);
+    const CheckSuiteResult r = runCheckSuite(pair, co);
+    const CheckRow& ratio = r.rows[checkRow(r, "ballistic.euler-ratio")];
+    ASSERT_EQ(ratio.cells.size(), 2u);
+    EXPECT_NEAR(ratio.cells[0].measured, 1.0, 1e-6);
+    EXPECT_NEAR(ratio.cells[1].measured, 1.0 / k, 1e-6);
+    const Json check = checkDocument(r, "test");
+    const Json& cells = check["results"]["checks"][checkRow(r, "ballistic.euler-ratio")]["results"];
+    EXPECT_NEAR(cells["test-substepped-defaults"]["measured"].get<double>(), 1.0, 1e-6);
+    EXPECT_EQ(cells["test-substepped-defaults"]["footing"], "defaults");
+    EXPECT_NEAR(cells["test-substepped-equal"]["measured"].get<double>(), 1.0 / k, 1e-6);
+    EXPECT_EQ(cells["test-substepped-equal"]["footing"], "equal");
+    const std::string text = checkTableText(r);
+    EXPECT_EQ(text.rfind("footing: both", 0), 0u) << text;
+    EXPECT_LT(text.find("test-substepped (own defaults)"), text.find("test-substepped (equal footing)")) << text;
+}
+
+TEST(HarnessFooting, BothFootingsOnTheCommandLine) {
+    // `vroc check --footing both`: native's two runs, the second with the equal footing's settings.
+    const fs::path dir = test::freshTempDir("footing-both");
+    const auto r = test::runVroc({"check", "--backends", "native", "--only", "ballistic", "--footing", "both",
+                                  "--footing-substeps", "3", "--jobs", "1", "-q", "--out", "both"},
+                                 dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("native (own defaults)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("native (equal footing)"), std::string::npos) << r.out;
+    const Json doc = readDocument(dir / "both" / "metrics.json");
+    ASSERT_EQ(doc["backends"].size(), 2u) << doc["backends"].dump();
+    EXPECT_EQ(doc["backends"][0]["footing"]["kind"], "defaults");
+    EXPECT_EQ(doc["backends"][1]["footing"]["kind"], "equal");
+    EXPECT_EQ(doc["backends"][1]["label"], "native (equal footing)");
+    EXPECT_EQ(doc["backends"][1]["settings"]["native.contact_substeps"], "3");
+    EXPECT_NE(doc["backends"][0]["settings"]["native.contact_substeps"], "3");
+    EXPECT_TRUE(doc["results"]["wall_time_s"].contains("native-equal")) << doc["results"].dump();
+    // sweep and ensemble run one footing at a time: a one-line error, exit 2.
+    const auto sweep =
+        test::runVroc({"sweep", "check:ballistic", "--backends", "native", "--footing", "both", "-q"}, dir);
+    EXPECT_EQ(sweep.exit_code, 2) << sweep.err;
+    EXPECT_NE(sweep.err.find("--footing both"), std::string::npos) << sweep.err;
 }
 
 }  // namespace

@@ -5,12 +5,12 @@
 #include <cmath>
 
 #include "vroc/core/mass_properties.h"
-#include "vroc/harness/divergence.h"
-#include "vroc/harness/event_timing.h"
-#include "vroc/harness/invariants.h"
-#include "vroc/harness/pareto.h"
-#include "vroc/harness/series_tools.h"
-#include "vroc/harness/timing_stats.h"
+#include "vroc/harness/documents/series_tools.h"
+#include "vroc/harness/metrics/divergence.h"
+#include "vroc/harness/metrics/event_timing.h"
+#include "vroc/harness/metrics/invariants.h"
+#include "vroc/harness/statistics/pareto.h"
+#include "vroc/harness/statistics/timing_stats.h"
 
 namespace vroc::harness {
 namespace {

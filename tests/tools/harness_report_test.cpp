@@ -15,10 +15,10 @@
 #include "vroc/core/errors.h"
 #include "vroc/core/mass_properties.h"
 #include "vroc/core/subprocess.h"
-#include "vroc/harness/compare.h"
-#include "vroc/harness/compare_document.h"
-#include "vroc/harness/html_report.h"
-#include "vroc/harness/report_merge.h"
+#include "vroc/harness/commands/compare.h"
+#include "vroc/harness/commands/report_merge.h"
+#include "vroc/harness/documents/compare_document.h"
+#include "vroc/harness/documents/html_report.h"
 
 namespace vroc::harness {
 namespace {

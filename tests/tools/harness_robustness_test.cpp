@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "test_scene_builder.h"
-#include "vroc/harness/robustness.h"
+#include "vroc/harness/metrics/robustness.h"
 
 namespace vroc::harness {
 namespace {

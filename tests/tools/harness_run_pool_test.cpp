@@ -10,7 +10,7 @@
 
 #include "test_scenes.h"
 #include "vroc/core/errors.h"
-#include "vroc/harness/run_pool.h"
+#include "vroc/harness/pool/run_pool.h"
 
 namespace vroc::harness {
 namespace {

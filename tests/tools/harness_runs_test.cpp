@@ -8,11 +8,11 @@
 
 #include "harness_test_backends.h"
 #include "vroc/core/mass_properties.h"
-#include "vroc/harness/check.h"
-#include "vroc/harness/check_document.h"
-#include "vroc/harness/compare.h"
-#include "vroc/harness/compare_document.h"
-#include "vroc/harness/run_trace.h"
+#include "vroc/harness/commands/check.h"
+#include "vroc/harness/commands/compare.h"
+#include "vroc/harness/documents/check_document.h"
+#include "vroc/harness/documents/compare_document.h"
+#include "vroc/harness/runs/run_trace.h"
 
 namespace vroc::harness {
 namespace {

@@ -9,9 +9,9 @@
 
 #include "harness_test_backends.h"
 #include "vroc/core/errors.h"
-#include "vroc/harness/check.h"
-#include "vroc/harness/check_document.h"
-#include "vroc/harness/check_suite.h"
+#include "vroc/harness/commands/check.h"
+#include "vroc/harness/commands/check_suite.h"
+#include "vroc/harness/documents/check_document.h"
 
 namespace vroc::harness {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "subprocess.h"
 #include "test_scenes.h"
-#include "vroc/harness/metrics_document.h"
+#include "vroc/harness/documents/metrics_document.h"
 
 namespace vroc::harness {
 namespace {

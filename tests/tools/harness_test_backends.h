@@ -15,7 +15,7 @@
 #include "vroc/core/backend_registry.h"
 #include "vroc/core/backend_vocabulary.h"
 #include "vroc/core/mass_properties.h"
-#include "vroc/harness/backend_selection.h"
+#include "vroc/harness/runs/backend_selection.h"
 
 namespace vroc::harness_test {
 

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "vroc/harness/two_sample_tests.h"
+#include "vroc/harness/statistics/two_sample_tests.h"
 
 namespace vroc::harness {
 namespace {

@@ -8,13 +8,13 @@
 #include <gtest/gtest.h>
 
 #include "harness_test_backends.h"
-#include "vroc/harness/check.h"
-#include "vroc/harness/check_document.h"
-#include "vroc/harness/compare.h"
-#include "vroc/harness/compare_document.h"
-#include "vroc/harness/run_validity.h"
-#include "vroc/harness/sweep.h"
-#include "vroc/harness/sweep_document.h"
+#include "vroc/harness/commands/check.h"
+#include "vroc/harness/commands/compare.h"
+#include "vroc/harness/commands/sweep.h"
+#include "vroc/harness/documents/check_document.h"
+#include "vroc/harness/documents/compare_document.h"
+#include "vroc/harness/documents/sweep_document.h"
+#include "vroc/harness/runs/run_validity.h"
 
 namespace vroc::harness {
 namespace {

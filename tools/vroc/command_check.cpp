@@ -16,10 +16,10 @@
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/output_dir.h"
-#include "vroc/harness/check.h"
-#include "vroc/harness/check_document.h"
-#include "vroc/harness/check_suite.h"
-#include "vroc/harness/mpi_world.h"
+#include "vroc/harness/commands/check.h"
+#include "vroc/harness/commands/check_suite.h"
+#include "vroc/harness/documents/check_document.h"
+#include "vroc/harness/pool/mpi_world.h"
 
 namespace vroc::cli {
 namespace {
@@ -62,7 +62,7 @@ std::filesystem::path stressScenesDir(const std::string& option) {
 }
 
 int check(CheckArgs& a, const Context& context) {
-    const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
+    const auto backends = footedBackends(a.footing, a.backends, a.assignments);
     a.options.progress = !a.quiet;
     a.options.command_line = context.command_line;
     const bool stress = a.options.stress || std::any_of(a.options.only.begin(), a.options.only.end(), harness::isStressScenarioId);

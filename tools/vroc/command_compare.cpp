@@ -15,9 +15,9 @@
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/output_dir.h"
 #include "vroc/core/scene_loader.h"
-#include "vroc/harness/compare.h"
-#include "vroc/harness/compare_document.h"
-#include "vroc/harness/mpi_world.h"
+#include "vroc/harness/commands/compare.h"
+#include "vroc/harness/documents/compare_document.h"
+#include "vroc/harness/pool/mpi_world.h"
 
 namespace vroc::cli {
 namespace {
@@ -39,7 +39,7 @@ int compare(CompareArgs& a, const Context& context) {
     if (!(a.options.duration > 0)) throw InputError("--duration: expected a positive number of seconds");
     if (a.dt && !(*a.dt > 0)) throw InputError("--dt: expected a positive number of seconds");
     if (!(a.options.window > 0) || a.options.windows < 1) throw InputError("--window/--windows: expected positive values");
-    const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
+    const auto backends = footedBackends(a.footing, a.backends, a.assignments);
     announceFooting("compare", backends, a.quiet);
     const Scene scene = loadScene(a.scene_file);
     a.options.frame_dt = a.dt;

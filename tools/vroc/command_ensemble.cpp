@@ -16,9 +16,9 @@
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/output_dir.h"
 #include "vroc/core/scene_loader.h"
-#include "vroc/harness/ensemble.h"
-#include "vroc/harness/ensemble_document.h"
-#include "vroc/harness/mpi_world.h"
+#include "vroc/harness/commands/ensemble.h"
+#include "vroc/harness/documents/ensemble_document.h"
+#include "vroc/harness/pool/mpi_world.h"
 
 namespace vroc::cli {
 namespace {

@@ -8,7 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
-#include "vroc/harness/report_merge.h"
+#include "vroc/harness/commands/report_merge.h"
 
 namespace vroc::cli {
 namespace {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `vroc run SCENE --backend NAME`: simulate one scene on one backend and record it (docs/cli.md).
+// `vroc run SCENE --backend NAME`: simulate one scene on one backend and record it (docs/cli.md),
+// with its 3D replay, view.html (docs/viewer.md).
 #include <csignal>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 
 #include "command.h"
 #include "progress_bar.h"
+#include "report_view.h"
 #include "vroc/audio/sound_recorder.h"
 #include "vroc/core/backend_registry.h"
 #include "vroc/core/errors.h"
@@ -40,6 +42,8 @@ struct RunOptions {
     std::string sound;                      ///< --sound: WAV of the impacts ("" = none)
     std::string sound_level = "normalize";  ///< --sound-level
     bool quiet = false;
+    bool no_view = false;           ///< --no-view: no view.html
+    bool view_penetration = false;  ///< --view-penetration: view.html with the penetration highlight (costly)
 };
 
 // Ctrl-C and SIGTERM stop the run between frames; the recorder then removes its temporary files.
@@ -140,6 +144,10 @@ int run(const RunOptions& options, const Context& context) {
     if (!options.quiet && sound_summary)
         std::printf("vroc: sound in %s: %s\n", fs::absolute(sound_summary->wav).lexically_normal().string().c_str(),
                     sound_summary->describe().c_str());
+    // After run.json: the view reads the finished run as `vroc view` would (a failure is a line on
+    // stderr, the run stands). Without the penetration highlight unless asked: the highlight (pair
+    // distances at every frame) can cost more than the run itself.
+    if (!options.no_view) writeReportView(request.out_dir, "run", options.quiet, options.view_penetration);
     return 0;
 }
 
@@ -166,8 +174,13 @@ Action setupRun(CLI::App& sub, const Context& context) {
     sub.add_option("--sound-level", o->sound_level,
                    "normalize: peak at -1 dBFS (default); fixed: same impulse, same level, soft limiter");
     sub.add_flag("--quiet,-q", o->quiet, "No progress bar and no summary; only errors");
+    sub.add_flag("--no-view", o->no_view, "Do not write view.html, the run's 3D replay (docs/viewer.md)");
+    sub.add_flag("--view-penetration", o->view_penetration,
+                 "Highlight penetration in view.html too (costly for many bodies; `vroc view DIR` also does it)");
     sub.footer(
-        "Writes trajectory.csv, events.csv and run.json (last, atomically) into the output directory;\n"
+        "Writes trajectory.csv, events.csv and run.json (last, atomically) into the output directory,\n"
+        "then view.html, the run's 3D replay for a browser, without the penetration highlight unless\n"
+        "--view-penetration (--no-view: no view.html; docs/viewer.md);\n"
         "--sound also writes the WAV and <stem>_events.csv (before run.json, atomically).\n"
         "Exit codes: 0 success, 2 bad input or usage, 3 failure while running.");
     return [o, context] { return run(*o, context); };

@@ -9,15 +9,15 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
-#include "frame_steps.h"
 #include "footing_options.h"
+#include "frame_steps.h"
 #include "run_pool_options.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/recording/output_dir.h"
-#include "vroc/harness/mpi_world.h"
-#include "vroc/harness/sweep.h"
-#include "vroc/harness/sweep_document.h"
-#include "vroc/harness/sweep_curves.h"
+#include "vroc/harness/commands/sweep.h"
+#include "vroc/harness/commands/sweep_curves.h"
+#include "vroc/harness/documents/sweep_document.h"
+#include "vroc/harness/pool/mpi_world.h"
 
 namespace vroc::cli {
 namespace {

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 // `--footing` and `--footing-substeps`, shared by the commands that put engines side by side
-// (check, compare, sweep, ensemble): on what footing the engines run (vroc/harness/backend_selection.h).
+// (check, compare, sweep, ensemble): on what footing the engines run (vroc/harness/runs/backend_selection.h);
+// check and compare also run both footings side by side (`--footing both`).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "vroc/harness/backend_selection.h"
+#include "vroc/harness/runs/backend_selection.h"
 
 namespace CLI {
 class App;
@@ -15,18 +16,24 @@ class App;
 namespace vroc::cli {
 
 struct FootingArgs {
-    std::string kind = "defaults";   ///< "defaults" or "equal"
+    std::string kind = "defaults";   ///< "defaults", "equal" or (check, compare) "both"
     int substeps = 4;                ///< [steps per frame] on the equal footing
 };
 
 /// Declares --footing and --footing-substeps on `sub`.
 void addFootingOptions(CLI::App& sub, FootingArgs& args);
 
-/// The footing the options ask for; throws InputError for a word that is not one.
+/// The footing the options ask for; throws InputError for a word that is not one, and for "both"
+/// (sweep and ensemble run one footing at a time).
 harness::Footing footingOf(const FootingArgs& args);
 
-/// On the equal footing, "vroc <command>: footing ..." on stderr (rank 0, unless `quiet`); the
-/// defaults footing is the normal case and says nothing.
+/// The backends of `list` on the footing the options ask for; with "both", every backend twice
+/// (own defaults, then equal footing), for check and compare.
+std::vector<harness::SelectedBackend> footedBackends(const FootingArgs& args, const std::string& list,
+                                                     const std::vector<std::string>& assignments);
+
+/// On the equal footing or both, "vroc <command>: footing ..." on stderr (rank 0, unless `quiet`);
+/// the defaults footing is the normal case and says nothing.
 void announceFooting(const std::string& command, const std::vector<harness::SelectedBackend>& backends, bool quiet);
 
 }  // namespace vroc::cli

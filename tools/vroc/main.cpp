@@ -12,10 +12,10 @@
 #include <CLI/CLI.hpp>
 
 #include "command.h"
-#include "vroc/registration/register_backends.h"
 #include "vroc/core/build_info.h"
 #include "vroc/core/errors.h"
-#include "vroc/harness/mpi_world.h"
+#include "vroc/harness/pool/mpi_world.h"
+#include "vroc/registration/register_backends.h"
 
 namespace {
 

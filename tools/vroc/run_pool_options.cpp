@@ -3,8 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "vroc/harness/mpi_world.h"
-#include "vroc/harness/pooled_command.h"
+#include "vroc/harness/commands/pooled_command.h"
+#include "vroc/harness/pool/mpi_world.h"
 
 namespace vroc::cli {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `--jobs` and `--resume`, shared by the commands that run many independent runs (sweep, check,
-// compare, ensemble), and the RunPool they configure (vroc/harness/run_pool.h).
+// compare, ensemble), and the RunPool they configure (vroc/harness/pool/run_pool.h).
 #pragma once
 
 #include <filesystem>
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "progress_bar.h"
-#include "vroc/harness/run_pool.h"
+#include "vroc/harness/pool/run_pool.h"
 
 namespace CLI {
 class App;

@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "event_detection.h"
 
+#include <set>
+#include <utility>
+
 #include <btBulletCollisionCommon.h>
 
 #include "bullet_convert.h"
-#include "vroc/core/contact_events.h"
 
 namespace vroc::bullet {
 
 void EventDetector::afterStep(btDispatcher& dispatcher, double time) {
-    StepContacts pairs;
+    std::vector<SolvedContact> solved;
+    std::set<std::pair<int, int>> touching;
     manifolds_ = static_cast<std::uint64_t>(dispatcher.getNumManifolds());
     points_ = 0;
     for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
@@ -18,33 +21,17 @@ void EventDetector::afterStep(btDispatcher& dispatcher, double time) {
         const int i1 = manifold->getBody1()->getUserIndex();
         // Bullet's normal on B points from body 1 to body 0; flip to "from a to b".
         const double to_b = i0 < i1 ? -1.0 : 1.0;
-        PairContacts& pc = pairs[pairKey(i0, i1)];
+        const auto [a, b] = pairKey(i0, i1);
         for (int p = 0; p < manifold->getNumContacts(); ++p) {
             const btManifoldPoint& cp = manifold->getContactPoint(p);
             ++points_;
-            const double j = cp.getAppliedImpulse();
-            if (cp.getDistance() < collision_distance_ || j > 0.0) pc.in_contact = true;
-            if (j <= 0.0) continue;
-            pc.addImpulse(0.5 * (fromBt(cp.getPositionWorldOnA()) + fromBt(cp.getPositionWorldOnB())),
-                          to_b * fromBt(cp.m_normalWorldOnB), j);
+            if (cp.getDistance() < collision_distance_) touching.insert({a, b});
+            solved.push_back({a, b, 0.5 * (fromBt(cp.getPositionWorldOnA()) + fromBt(cp.getPositionWorldOnB())),
+                              to_b * fromBt(cp.m_normalWorldOnB), cp.getAppliedImpulse()});
         }
     }
     points_total_ += points_;
-    std::set<std::pair<int, int>> now;
-    for (const auto& [pair, pc] : pairs) {
-        if (!pc.in_contact) continue;
-        now.insert(pair);
-        if (pc.impulse <= 0.0 || in_contact_.count(pair)) continue;
-        pending_.push_back(pc.event(pair, time));
-        ++events_total_;
-    }
-    in_contact_ = std::move(now);
-}
-
-std::vector<CollisionEvent> EventDetector::take() {
-    std::vector<CollisionEvent> out;
-    out.swap(pending_);
-    return out;
+    tracker_.afterStep(solved, touching, time);
 }
 
 }  // namespace vroc::bullet

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: MIT
-// Collision events from Bullet's persistent manifolds, by the definition in docs/events.md:
-// a pair is "in contact" after an internal step if one of its contact points is closer than the
-// scene's collision distance or the solver applied a positive normal impulse to it in that step
-// (Bullet's speculative contacts act before the surfaces meet). A collision is a pair in contact
-// with a positive normal impulse that was not in contact after the previous internal step.
+// Collision events from Bullet's persistent manifolds (docs/events.md): every manifold point of an
+// internal step is a solved contact with its applied impulse, and a point closer than the scene's
+// collision distance makes its pair touching. Touching starts a contact (TouchingRule::StartsContact):
+// Bullet's speculative contacts act before the surfaces meet, so an impulse may come without touching
+// but touching never comes before the impulse of a collision. A pair may own several manifolds
+// (compounds); core's ContactPairTracker merges them per pair.
 #pragma once
 
 #include <cstdint>
-#include <set>
-#include <utility>
 #include <vector>
 
 #include "vroc/core/backend.h"
+#include "vroc/core/contact_pair_tracker.h"
 
 class btDispatcher;
 
@@ -26,19 +26,18 @@ public:
     /// carry their scene body index as user index.
     void afterStep(btDispatcher& dispatcher, double time);
     /// Events since the previous call, in time order (then by pair).
-    std::vector<CollisionEvent> take();
+    std::vector<CollisionEvent> take() { return tracker_.take(); }
 
-    std::uint64_t manifoldCount() const { return manifolds_; }          ///< after the last step
-    std::uint64_t contactPointCount() const { return points_; }         ///< after the last step
-    std::uint64_t contactPointTotal() const { return points_total_; }   ///< summed over steps
-    std::uint64_t pairsInContact() const { return in_contact_.size(); } ///< after the last step
-    std::uint64_t eventTotal() const { return events_total_; }
+    std::uint64_t manifoldCount() const { return manifolds_; }                  ///< after the last step
+    std::uint64_t contactPointCount() const { return points_; }                 ///< after the last step
+    std::uint64_t contactPointTotal() const { return points_total_; }           ///< summed over steps
+    std::uint64_t pairsInContact() const { return tracker_.pairsInContact(); }  ///< after the last step
+    std::uint64_t eventTotal() const { return tracker_.eventTotal(); }
 
 private:
     double collision_distance_;
-    std::set<std::pair<int, int>> in_contact_;   ///< pairs (a < b) in contact after the last step
-    std::vector<CollisionEvent> pending_;
-    std::uint64_t manifolds_ = 0, points_ = 0, points_total_ = 0, events_total_ = 0;
+    ContactPairTracker tracker_{TouchingRule::StartsContact};
+    std::uint64_t manifolds_ = 0, points_ = 0, points_total_ = 0;
 };
 
 }  // namespace vroc::bullet

@@ -9,7 +9,9 @@
 #include <dart/dynamics/Frame.hpp>
 #include <dart/dynamics/Inertia.hpp>
 #include <iostream>
+#include <set>
 #include <string>
+#include <utility>
 
 #include <Eigen/Cholesky>
 
@@ -259,6 +261,7 @@ void DartBackend::alignFriction() {
 void DartBackend::readContacts(double h, double end_time) {
     const ::dart::collision::CollisionResult& result = world_->getLastCollisionResult();
     std::vector<SolvedContact> solved;
+    std::set<std::pair<int, int>> touching;  // every pair the step found, with or without impulse
     solved.reserve(result.getNumContacts());
     for (const ::dart::collision::Contact& c : result.getContacts()) {
         const NodeTag* ta = filter_->find(c.collisionObject1->getShapeFrame());
@@ -274,10 +277,11 @@ void DartBackend::readContacts(double h, double end_time) {
         const double impulse = c.force.dot(n) * h;
         s.impulse = std::isfinite(impulse) && impulse > 0.0 ? impulse : 0.0;
         solved.push_back(s);
+        touching.insert({s.body_a, s.body_b});
     }
     contact_points_ = solved.size();
     contact_points_total_ += contact_points_;
-    events_.afterStep(solved, end_time);
+    events_.afterStep(solved, touching, end_time);
 }
 
 // The kinematic body at its motion's pose and velocities. A pose that overflows (a finite but

@@ -24,9 +24,9 @@
 
 #include "contact_classes.h"
 #include "dart_config.h"
-#include "event_detection.h"
 #include "sized_lcp_solver.h"
 #include "vroc/core/backend.h"
+#include "vroc/core/contact_pair_tracker.h"
 #include "vroc/core/tracked_motion.h"
 
 namespace vroc::dart {
@@ -95,7 +95,11 @@ private:
     std::vector<FrameState> saved_;  ///< states before the step in progress (growing contact buffer)
     std::size_t contact_capacity_ = 1000;
     bool mesh_for_hulls_ = false;  ///< spheres and hulls in one scene: FCL collides meshes (dart_backend.cpp)
-    EventDetector events_;
+    /// Collision events (docs/events.md) from the contacts the step's solver found at its start
+    /// (World::getLastCollisionResult) with their solved impulses; every such contact's pair is
+    /// touching. As in ODE, touching keeps a contact but never starts one: a pair the step found
+    /// touching whose impulse is zero stays in contact only if it was before (readContacts).
+    ContactPairTracker events_{TouchingRule::KeepsContact};
     double time_ = 0.0;  ///< [s] sum of frame dts
     std::uint64_t frames_ = 0, internal_steps_ = 0, nonfinite_ = 0, step_cap_ = 0, contact_cap_ = 0,
                   buffer_growths_ = 0;

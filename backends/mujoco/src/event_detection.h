@@ -2,25 +2,26 @@
 // Collision events from MuJoCo's contact list (docs/events.md, adapted as below). After mj_step
 // the list holds the contacts found at the start of that step (every one closer than the scene's
 // collision distance: that is the geoms' margin) and mj_contactForce gives the force the solver
-// applied through each during the step. A pair is in contact in a step if it has a contact closer
-// than the collision distance or one that carried a positive normal force.
-// Adaptation: a collision is the first step with a positive normal impulse (force x step) in an
-// unbroken run of steps in contact. MuJoCo's force starts only once the surfaces overlap, so a pair
-// often spends a step inside the collision distance with no force yet; events.md's literal rule
-// ("not in contact after the previous step") would then drop the collision. A resting or sliding
-// contact still gives one event, a new bounce (after the pair left contact) a new one. MuJoCo's
-// soft contact spreads a collision over several steps: an event's impulse is the first step's
-// share (docs/mujoco-backend.md quotes it).
+// applied through each during the step: a solved contact with impulse force x step. A pair is
+// touching if it has a contact closer than the collision distance or one that carried a positive
+// normal force.
+// Adaptation (TouchingRule::StartsContactEventAtFirstImpulse): a collision is the first step with a
+// positive normal impulse in an unbroken run of steps in contact. MuJoCo's force starts only once
+// the surfaces overlap, so a pair often spends a step inside the collision distance with no force
+// yet; events.md's literal rule ("not in contact after the previous step") would then drop the
+// collision. A resting or sliding contact still gives one event, a new bounce (after the pair left
+// contact) a new one. MuJoCo's soft contact spreads a collision over several steps: an event's
+// impulse is the first step's share (docs/mujoco-backend.md quotes it).
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <utility>
 #include <vector>
 
 #include <mujoco/mujoco.h>
 
 #include "vroc/core/backend.h"
+#include "vroc/core/contact_pair_tracker.h"
 
 namespace vroc::mujoco {
 
@@ -34,21 +35,19 @@ public:
     /// Scans the contacts after an internal step of `h` [s] that ended at `time` [s].
     void afterStep(const mjModel& m, const mjData& d, double h, double time);
     /// Forgets the contact state (after the state was put back by the recovery).
-    void reset() { in_contact_.clear(); }
+    void reset() { tracker_.reset(); }
     /// Events since the previous call, in time order (then by pair).
-    std::vector<CollisionEvent> take();
+    std::vector<CollisionEvent> take() { return tracker_.take(); }
 
-    std::uint64_t contactPointTotal() const { return points_total_; }   ///< summed over steps
-    std::uint64_t pairsInContact() const { return in_contact_.size(); } ///< after the last step
-    std::uint64_t eventTotal() const { return events_total_; }
+    std::uint64_t contactPointTotal() const { return points_total_; }           ///< summed over steps
+    std::uint64_t pairsInContact() const { return tracker_.pairsInContact(); }  ///< after the last step
+    std::uint64_t eventTotal() const { return tracker_.eventTotal(); }
 
 private:
     double collision_distance_;
     std::vector<int> geom_body_;
-    /// Pairs (a < b) in contact in the last step, each with whether its run already had its event.
-    std::map<std::pair<int, int>, bool> in_contact_;
-    std::vector<CollisionEvent> pending_;
-    std::uint64_t points_total_ = 0, events_total_ = 0;
+    ContactPairTracker tracker_{TouchingRule::StartsContactEventAtFirstImpulse};
+    std::uint64_t points_total_ = 0;
 };
 
 }  // namespace vroc::mujoco

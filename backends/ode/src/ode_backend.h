@@ -24,12 +24,12 @@
 #include <ode/ode.h>
 
 #include "contact_generation.h"
-#include "event_detection.h"
 #include "ode_config.h"
 #include "ode_runtime.h"
 #include "shape_mapping.h"
 #include "vroc/core/tracked_motion.h"
 #include "vroc/core/backend.h"
+#include "vroc/core/contact_pair_tracker.h"
 
 namespace vroc::ode {
 
@@ -93,7 +93,12 @@ private:
     ContactGenerator contacts_;
     bool contacts_current_ = false;             ///< contacts_ describes the current poses
     std::vector<dJointFeedback> feedback_;      ///< one per contact joint of the step in progress
-    EventDetector events_;
+    /// Collision events (docs/events.md) from the step's contact joints with their feedback impulses
+    /// and the pairs the collision pass finds touching after the step. ODE finds a pair touching at
+    /// the end of one step and acts on it in the next, so touching keeps a contact but never starts
+    /// one, and a pair closer than the collision distance but not touching keeps none (ODE's
+    /// colliders see no gap).
+    ContactPairTracker events_{TouchingRule::KeepsContact};
     OdeMessageCounts messages_;                 ///< ODE's recovered-trouble messages
     unsigned long random_seed_ = 0;             ///< this world's share of ODE's random generator
     double time_ = 0.0;                         ///< [s] sum of frame dts

@@ -26,7 +26,7 @@
 #include "vroc/core/backend_registry.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
-#include "vroc/harness/scene_support.h"
+#include "vroc/harness/runs/scene_support.h"
 
 namespace vroc::conformance {
 namespace {

@@ -24,7 +24,7 @@
 #include "vroc/core/build_info.h"
 #include "vroc/core/scene_loader.h"
 #include "vroc/core/state_hash.h"
-#include "vroc/harness/scene_support.h"
+#include "vroc/harness/runs/scene_support.h"
 
 namespace vroc::conformance {
 namespace {

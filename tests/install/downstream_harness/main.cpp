@@ -20,9 +20,9 @@
 #include "vroc/core/backend_registry.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/scene_loader.h"
-#include "vroc/harness/backend_selection.h"
-#include "vroc/harness/divergence.h"
-#include "vroc/harness/run_trace.h"
+#include "vroc/harness/metrics/divergence.h"
+#include "vroc/harness/runs/backend_selection.h"
+#include "vroc/harness/runs/run_trace.h"
 #include "vroc/native/native_backend.h"
 
 namespace {

@@ -3,9 +3,12 @@
 // no network request and holds the run's bodies and frames (counted here from the run's files); its
 // pictures change between two times exactly where bodies move; a body's centre, projected with the
 // page's own camera, lands on a pixel of that body's colour at three times; the ghosts of two
-// identical runs coincide. Skipped only when chromium is not installed.
+// identical runs coincide; each engine's ghosts, legend entry and label show its own tint. The page
+// `vroc run` writes is the one loaded first. Skipped only when chromium is not installed.
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -43,27 +46,43 @@ const Json& probe(const Json& self, int frame, int body, int view) {
     throw std::runtime_error("no probe for frame " + std::to_string(frame) + " body " + std::to_string(body));
 }
 
-// At least 5 of the 9 pixels around (x, y) have the hue of `colour` (within 20 degrees) and are
+// At least 5 of the 9 pixels around a point have the hue of `colour` (within 20 degrees) and are
 // clearly coloured: lighting scales a colour's brightness, not its hue.
-bool showsColour(const test::Screenshot& shot, double x, double y, const std::string& colour) {
+bool showsColour(const std::vector<test::Rgb>& pixels, const std::string& colour) {
     double want_hue = 0, want_sat = 0;
     test::hueSaturation(test::parseHex(colour), want_hue, want_sat);
     int hits = 0;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            double hue = 0, sat = 0;
-            test::hueSaturation(shot.at(int(std::lround(x)) + dx, int(std::lround(y)) + dy), hue, sat);
-            const double d = std::abs(std::remainder(hue - want_hue, 360.0));
-            hits += (d < 20 && sat > 0.3) ? 1 : 0;
-        }
+    for (const test::Rgb& pixel : pixels) {
+        double hue = 0, sat = 0;
+        test::hueSaturation(pixel, hue, sat);
+        const double d = std::abs(std::remainder(hue - want_hue, 360.0));
+        hits += (d < 20 && sat > 0.3) ? 1 : 0;
+    }
     return hits >= 5;
 }
 
+// ... around (x, y) of a screenshot.
+bool showsColour(const test::Screenshot& shot, double x, double y, const std::string& colour) {
+    std::vector<test::Rgb> pixels;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) pixels.push_back(shot.at(int(std::lround(x)) + dx, int(std::lround(y)) + dy));
+    return showsColour(pixels, colour);
+}
+
+// ... around a probe at the frame the page drew, as the page read them back from its canvas.
+bool showsColour(const Json& probe, const std::string& colour) {
+    std::vector<test::Rgb> pixels;
+    for (const Json& hex : probe.value("pixels", Json::array())) pixels.push_back(test::parseHex(hex));
+    return pixels.size() == 9 && showsColour(pixels, colour);
+}
+
+// The page is the one `vroc run` wrote into its directory (the same as `vroc view --no-penetration`
+// writes of it, and a note: ViewerInputs.RunWritesTheViewThatViewWrites).
 TEST(ViewerChromium, LoadsWithoutErrorsOrNetworkAndHoldsTheRun) {
     const fs::path dir = test::freshTempDir("viewer-load");
     SKIP_WITHOUT_CHROMIUM(dir);
     const fs::path run = test::recordViewerRun(dir, "run");
-    const fs::path page = writePage(dir, {run}, "view.html");
+    const fs::path page = run / "view.html";
     const auto self = test::pageSelfTest(page, "", dir);
     ASSERT_TRUE(self) << "no self-test in the page's DOM: " << test::readText((dir / "chromium.log").string());
     EXPECT_TRUE((*self)["ok"].get<bool>()) << self->dump();
@@ -73,6 +92,9 @@ TEST(ViewerChromium, LoadsWithoutErrorsOrNetworkAndHoldsTheRun) {
     const auto lines = test::splitLines(test::readText((run / "trajectory.csv").string()));
     EXPECT_EQ((*self)["frames"].get<std::size_t>(), (lines.size() - 1) / 3);  // 3 moving bodies per frame
     EXPECT_EQ((*self)["backends"], Json::array({"native"}));
+    ASSERT_EQ((*self)["legend"].size(), 1u);  // one engine, with its tint
+    EXPECT_EQ((*self)["legend"][0]["label"], "native");
+    EXPECT_EQ((*self)["legend"][0]["tint"], test::pageData(page)["runs"][0]["tint"]);
     std::printf("self-test load time: %d ms (performance.now() at the end of the viewer's script)\n",
                 (*self)["load_ms"].get<int>());
 }
@@ -133,7 +155,8 @@ TEST(ViewerChromium, GhostsOfTwoIdenticalRunsCoincide) {
     const fs::path run = test::recordViewerRun(dir, "run");
     fs::copy(run, dir / "copy", fs::copy_options::recursive);
     const fs::path page = writePage(dir, {run, dir / "copy"}, "ghosts.html");
-    const auto self = test::pageSelfTest(page, "#overlay=1&probe=1,3&probe_frames=10,30" + kProbeSize, dir);
+    const auto self =
+        test::pageSelfTest(page, "#overlay=1&events=0&colour=distance&frame=30&probe=1,3&probe_frames=10,30", dir);
     ASSERT_TRUE(self);
     EXPECT_TRUE((*self)["overlay"].get<bool>());
     ASSERT_EQ((*self)["views"].size(), 2u);
@@ -143,11 +166,68 @@ TEST(ViewerChromium, GhostsOfTwoIdenticalRunsCoincide) {
             EXPECT_NEAR(a["x"].get<double>(), c["x"].get<double>(), 0.5);
             EXPECT_NEAR(a["y"].get<double>(), c["y"].get<double>(), 0.5);
         }
-    // Two translucent ghosts in one place show the body's colour at its centre.
-    const auto shot = test::screenshot(page, "#overlay=1&events=0&frame=30", dir / "ghosts.png", dir);
-    ASSERT_TRUE(shot);
+    // Two translucent ghosts in one place, coloured by their distance from the first (zero: both
+    // the same colour; by body each would show its engine's tint), show that colour at the centre
+    // (the pixels the page drew there, read back from its canvas).
     const Json& p = probe(*self, 30, 1, 0);
-    EXPECT_TRUE(showsColour(*shot, p["x"], p["y"], p["colour"])) << p.dump() << " in " << dir / "ghosts.png";
+    EXPECT_EQ(p["colour"], probe(*self, 30, 1, 1)["colour"]);
+    EXPECT_TRUE(showsColour(p, p["colour"])) << p.dump();
+}
+
+// Two engines overlaid as ghosts: native, and Bullet on the scene with the thrown ball started 0.6 m
+// further along x (shown with the first scene's geometry, --scene), so the two ghosts of the ball
+// are apart. The page's data gives each engine one tint and the two differ; the legend and the
+// label show each engine with its tint; each ghost of the ball is drawn in its engine's tint.
+TEST(ViewerChromium, GhostsLegendAndLabelsShowEachEnginesTint) {
+    const fs::path dir = test::freshTempDir("viewer-tints");
+    SKIP_WITHOUT_CHROMIUM(dir);
+    const fs::path native = test::recordViewerRun(dir, "native", 0.5, "native", {"--no-view"});
+    std::string moved = test::kViewerScene;
+    const std::string start = "\"position\": [-1.0, 0.0, 0.8]";
+    ASSERT_NE(moved.find(start), std::string::npos);
+    moved.replace(moved.find(start), start.size(), "\"position\": [-0.4, 0.0, 0.8]");
+    const fs::path moved_scene = test::writeFile(dir / "moved.json", moved);
+    const test::ProcessResult run = test::runVroc({"run", moved_scene.string(), "--backend", "bullet", "--duration",
+                                                   "0.5", "--no-view", "-o", (dir / "bullet").string()},
+                                                  dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const fs::path page = dir / "tints.html";
+    const test::ProcessResult view = test::runVroc({"view", native.string(), (dir / "bullet").string(), "--scene",
+                                                    (dir / "viewer_test.json").string(), "-o", page.string()},
+                                                   dir);
+    ASSERT_EQ(view.exit_code, 0) << view.err;
+
+    // The data: one tint per engine, and distinct.
+    std::map<std::string, std::set<std::string>> tints;
+    const Json data = test::pageData(page);
+    for (const Json& r : data["runs"]) tints[r["label"]].insert(r["tint"].get<std::string>());
+    ASSERT_EQ(tints.size(), 2u);
+    ASSERT_EQ(tints["native"].size(), 1u);
+    ASSERT_EQ(tints["bullet"].size(), 1u);
+    const std::string native_tint = *tints["native"].begin(), bullet_tint = *tints["bullet"].begin();
+    EXPECT_NE(native_tint, bullet_tint);
+
+    // The page: legend and label entries as drawn (swatch colours read back from the DOM).
+    const int frame = 15;  // t = 0.3 s: both balls in flight, 0.6 m apart
+    const std::string at = std::to_string(frame);
+    const auto self = test::pageSelfTest(page, "#overlay=1&events=0&frame=" + at + "&probe=1&probe_frames=" + at, dir);
+    ASSERT_TRUE(self);
+    EXPECT_TRUE((*self)["errors"].empty()) << (*self)["errors"].dump();
+    const Json engines =
+        Json::array({{{"label", "native"}, {"tint", native_tint}}, {{"label", "bullet"}, {"tint", bullet_tint}}});
+    EXPECT_EQ((*self)["engines"], engines);
+    EXPECT_EQ((*self)["legend"], engines) << "the legend's entries";
+    EXPECT_EQ((*self)["labels"], engines) << "the overlay's label";
+
+    // The picture: each ghost of the thrown ball shows its engine's tint at its centre (the pixels
+    // the page drew there, read back from its canvas).
+    const Json &a = probe(*self, frame, 1, 0), &b = probe(*self, frame, 1, 1);
+    EXPECT_EQ(a["colour"], native_tint);
+    EXPECT_EQ(b["colour"], bullet_tint);
+    ASSERT_GT(std::hypot(a["x"].get<double>() - b["x"].get<double>(), a["y"].get<double>() - b["y"].get<double>()), 40)
+        << "the two ghosts overlap: " << a.dump() << " " << b.dump();
+    EXPECT_TRUE(showsColour(a, native_tint)) << a.dump();
+    EXPECT_TRUE(showsColour(b, bullet_tint)) << b.dump();
 }
 
 }  // namespace

@@ -1,11 +1,18 @@
 // SPDX-License-Identifier: MIT
 // The viewer's data against the run's own files, counted here independently (lines of
 // trajectory.csv, bodies of the scene file); `vroc view` errors on a missing or truncated
-// trajectory; subsampling; the size of a 200-body, 300-frame, 4-backend page.
+// trajectory; subsampling; each engine's tint; the view `vroc run` writes; a compare on both
+// footings; the size of a 200-body, 300-frame, 4-backend page.
 #include "vroc/viewer/viewer_inputs.h"
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -94,6 +101,136 @@ TEST(ViewerInputs, ViewWritesThePage) {
     EXPECT_NE(html.find("\"format\":\"vroc-view/1\""), std::string::npos);
 }
 
+// Every engine has one tint, "#rrggbb", no two engines share one (up to 7), and the tints go by the
+// engines' order in the inputs: the same inputs in another order give the first engine the first
+// tint again; an eighth engine is noted.
+TEST(ViewerInputs, EachEngineHasItsOwnTintInTheInputsOrder) {
+    const fs::path dir = test::freshTempDir("viewer-tints");
+    const fs::path native = test::recordViewerRun(dir, "native", 0.2, "native", {"--no-view"});
+    const fs::path bullet = test::recordViewerRun(dir, "bullet", 0.2, "bullet", {"--no-view"});
+    ViewerOptions options;
+    options.penetration = false;
+    const ViewerData a = loadViewerData({native, bullet, native}, options);
+    ASSERT_EQ(a.runs.size(), 3u);
+    EXPECT_EQ(a.runs[2].label, "native (2)");  // a second engine, not the first one again
+    std::set<std::string> tints;
+    for (const ViewerRun& r : a.runs) {
+        EXPECT_TRUE(std::regex_match(r.tint, std::regex("#[0-9a-f]{6}"))) << r.label << ": " << r.tint;
+        tints.insert(r.tint);
+    }
+    EXPECT_EQ(tints.size(), 3u) << "engines share a tint";
+    const ViewerData b = loadViewerData({bullet, native}, options);
+    ASSERT_EQ(b.runs.size(), 2u);
+    EXPECT_EQ(b.runs[0].backend, "bullet");
+    EXPECT_EQ(b.runs[0].tint, a.runs[0].tint) << "the first engine's tint follows the order";
+    EXPECT_EQ(b.runs[1].tint, a.runs[1].tint);
+    EXPECT_EQ(loadViewerData({native, bullet, native}, options).runs[2].tint, a.runs[2].tint);
+    EXPECT_TRUE(a.notes.empty()) << a.notes.front();
+    // Eight engines: seven tints, the eighth repeats one, and the page says so.
+    const ViewerData eight = loadViewerData(std::vector<fs::path>(8, native), options);
+    tints.clear();
+    for (const ViewerRun& r : eight.runs) tints.insert(r.tint);
+    EXPECT_EQ(tints.size(), 7u);
+    ASSERT_EQ(eight.notes.size(), 1u);
+    EXPECT_NE(eight.notes[0].find("tints repeat"), std::string::npos) << eight.notes[0];
+}
+
+// `vroc run -o DIR` writes DIR/view.html and says so; it holds what `vroc view --no-penetration DIR`
+// writes (the page ViewerChromium.LoadsWithoutErrorsOrNetworkAndHoldsTheRun loads), and a note that
+// the highlight was skipped. --view-penetration writes what `vroc view DIR` writes, highlight
+// included. --no-view writes none; --help tells of all three.
+TEST(ViewerInputs, RunWritesTheViewThatViewWrites) {
+    const fs::path dir = test::freshTempDir("viewer-run-view");
+    const auto scene = test::writeFile(dir / "viewer_test.json", test::kViewerScene);
+    const test::ProcessResult r =
+        test::runVroc({"run", scene.string(), "--backend", "native", "--duration", "1", "-o", "run"}, dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    ASSERT_TRUE(fs::exists(dir / "run" / "view.html")) << r.out << r.err;
+    EXPECT_NE(r.out.find("3D view run/view.html"), std::string::npos) << r.out;
+    const test::ProcessResult v = test::runVroc({"view", "run", "--no-penetration", "-o", "view.html"}, dir);
+    ASSERT_EQ(v.exit_code, 0) << v.err;
+    nlohmann::json own = test::pageData(dir / "run" / "view.html");
+    ASSERT_EQ(own["notes"].size(), 1u) << own["notes"];
+    EXPECT_NE(own["notes"][0].get<std::string>().find("penetration not highlighted"), std::string::npos);
+    EXPECT_NE(own["notes"][0].get<std::string>().find("--view-penetration"), std::string::npos);
+    own["notes"] = nlohmann::json::array();
+    EXPECT_EQ(own, test::pageData(dir / "view.html"));
+    ASSERT_EQ(own["runs"].size(), 1u);
+    EXPECT_FALSE(own["runs"][0]["has_penetration"].get<bool>());
+    EXPECT_EQ(own["times"].size(), framesInFile(dir / "run" / "trajectory.csv", 3));
+
+    const test::ProcessResult p = test::runVroc(
+        {"run", scene.string(), "--backend", "native", "--duration", "0.3", "--view-penetration", "-o", "pen"}, dir);
+    ASSERT_EQ(p.exit_code, 0) << p.err;
+    ASSERT_EQ(test::runVroc({"view", "pen", "-o", "pen.html"}, dir).exit_code, 0);
+    const nlohmann::json judged = test::pageData(dir / "pen" / "view.html");
+    EXPECT_EQ(judged, test::pageData(dir / "pen.html"));
+    EXPECT_TRUE(judged["runs"][0]["has_penetration"].get<bool>());
+
+    const test::ProcessResult bare = test::runVroc(
+        {"run", scene.string(), "--backend", "native", "--duration", "0.1", "--no-view", "-o", "bare"}, dir);
+    ASSERT_EQ(bare.exit_code, 0) << bare.err;
+    EXPECT_TRUE(fs::exists(dir / "bare" / "run.json"));
+    EXPECT_FALSE(fs::exists(dir / "bare" / "view.html"));
+    EXPECT_EQ(bare.out.find("view.html"), std::string::npos) << bare.out;
+    const test::ProcessResult help = test::runVroc({"run", "--help"}, dir);
+    EXPECT_NE(help.out.find("--no-view"), std::string::npos) << help.out;
+    EXPECT_NE(help.out.find("--view-penetration"), std::string::npos) << help.out;
+    EXPECT_NE(help.out.find("view.html"), std::string::npos) << help.out;
+}
+
+// The last recorded position of `body` in a trajectory.csv, parsed here.
+Vec3 lastPosition(const fs::path& trajectory, const std::string& body) {
+    const auto lines = test::splitLines(test::readText(trajectory.string()));
+    for (auto line = lines.rbegin(); line != lines.rend(); ++line) {
+        const auto row = test::splitCsv(*line);
+        if (row.size() > 4 && row[1] == body) return {std::stod(row[2]), std::stod(row[3]), std::stod(row[4])};
+    }
+    ADD_FAILURE() << trajectory << ": no row of " << body;
+    return Vec3::Zero();
+}
+
+// `vroc compare --footing both` runs every backend twice and keeps each run's CSVs under its key
+// (native-defaults/, bullet-equal/, ...): the page shows all four runs as four engines, each named
+// by its footing, with four tints, and each with the poses of its own folder (Bullet's two
+// footings fly the thrown ball apart: 1 vs 4 internal steps per frame).
+TEST(ViewerInputs, CompareOnBothFootingsShowsEachFootingAsItsOwnEngine) {
+    const fs::path dir = test::freshTempDir("viewer-footing-both");
+    const auto scene = test::writeFile(dir / "viewer_test.json", test::kViewerScene);
+    const test::ProcessResult r =
+        test::runVroc({"compare", scene.string(), "--backends", "native,bullet", "--footing", "both", "--duration",
+                       "0.3", "--windows", "1", "--window", "0.1", "--jobs", "1", "-q", "-o", "both"},
+                      dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("no 3D view"), std::string::npos) << r.err;
+    ASSERT_TRUE(fs::exists(dir / "both" / "view.html"));
+    // Each run's label and the folder of its CSVs.
+    const std::vector<std::pair<std::string, std::string>> expected = {{"native (own defaults)", "native-defaults"},
+                                                                       {"native (equal footing)", "native-equal"},
+                                                                       {"bullet (own defaults)", "bullet-defaults"},
+                                                                       {"bullet (equal footing)", "bullet-equal"}};
+    ViewerOptions options;
+    options.penetration = false;
+    const ViewerData data = loadViewerData({dir / "both"}, options);
+    ASSERT_EQ(data.runs.size(), expected.size());
+    std::set<std::string> tints;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const ViewerRun& run = data.runs[i];
+        EXPECT_EQ(run.label, expected[i].first);
+        EXPECT_EQ(run.backend, expected[i].second.substr(0, expected[i].second.find('-')));
+        const Vec3 file = lastPosition(dir / "both" / expected[i].second / "trajectory.csv", "thrown");
+        EXPECT_LT((run.poses.back()[0].position - file).norm(), 1e-12) << run.label << " vs " << expected[i].second;
+        tints.insert(run.tint);
+    }
+    EXPECT_EQ(tints.size(), expected.size()) << "two footings share a tint";
+    EXPECT_GT((data.runs[2].poses.back()[0].position - data.runs[3].poses.back()[0].position).norm(), 1e-3)
+        << "Bullet's two footings should fly apart (else a swapped folder would go unseen)";
+    // The page `vroc compare` wrote shows the same four engines.
+    const nlohmann::json page = test::pageData(dir / "both" / "view.html");
+    ASSERT_EQ(page["runs"].size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(page["runs"][i]["label"], expected[i].first);
+}
+
 TEST(ViewerInputs, Base64MatchesRfc4648) {
     EXPECT_EQ(base64(""), "");
     EXPECT_EQ(base64("f"), "Zg==");
@@ -102,13 +239,6 @@ TEST(ViewerInputs, Base64MatchesRfc4648) {
     std::string bytes;
     appendFloat32(bytes, 1.0f);  // 0x3f800000, little-endian
     EXPECT_EQ(bytes, std::string("\x00\x00\x80\x3f", 4));
-}
-
-// The page's embedded data ("vroc-view/1") as JSON.
-nlohmann::json pageData(const fs::path& page) {
-    const std::string html = test::readText(page.string());
-    const std::size_t at = html.find('>', html.find("id=\"vroc-data\"")) + 1;
-    return nlohmann::json::parse(html.substr(at, html.find("</script>", at) - at));
 }
 
 // An ensemble keeps no trajectories: `vroc view` replays its members, and each replay ends in the
@@ -125,11 +255,17 @@ TEST(ViewerInputs, EnsembleMembersAreReplayedToTheirRecordedStates) {
                                         "-o",   (dir / "v.html").string()};
     const test::ProcessResult v = test::runVroc(view, dir);
     ASSERT_EQ(v.exit_code, 0) << v.err;
-    const auto data = pageData(dir / "v.html");
+    const auto data = test::pageData(dir / "v.html");
     ASSERT_EQ(data["runs"].size(), 4u);  // 2 of 3 members x 2 backends
     int medians = 0;
     for (const auto& run : data["runs"]) medians += run["median"].get<bool>() ? 1 : 0;
     EXPECT_EQ(medians, 2);                                 // one per backend
+    std::map<std::string, std::set<std::string>> tints;    // backend -> its members' tints
+    for (const auto& run : data["runs"]) tints[run["backend"]].insert(run["tint"].get<std::string>());
+    ASSERT_EQ(tints.size(), 2u);
+    EXPECT_EQ(tints["native"].size(), 1u) << "an ensemble's members share their engine's tint";
+    EXPECT_EQ(tints["bullet"].size(), 1u);
+    EXPECT_NE(*tints["native"].begin(), *tints["bullet"].begin());
     ASSERT_EQ(data["notes"].size(), 1u) << data["notes"];  // "2 of 3 members", and no mismatch
     EXPECT_NE(data["notes"][0].get<std::string>().find("2 of 3 members"), std::string::npos);
     // A recorded hash that does not match is named on the page.
@@ -140,7 +276,7 @@ TEST(ViewerInputs, EnsembleMembersAreReplayedToTheirRecordedStates) {
     text.replace(text.find('"', text.find(':', at)) + 1, 16, "0123456789abcdef");
     std::ofstream(member, std::ios::trunc) << text;
     ASSERT_EQ(test::runVroc(view, dir).exit_code, 0);
-    const auto changed = pageData(dir / "v.html");
+    const auto changed = test::pageData(dir / "v.html");
     ASSERT_EQ(changed["notes"].size(), 2u);
     EXPECT_NE(changed["notes"][0].get<std::string>().find("bullet #1"), std::string::npos) << changed["notes"];
 }

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 // A small scene and its runs for the viewer tests: a real floor, a ball thrown sideways (it moves
 // across the picture), a ball resting on the floor (it does not move) and a tracked box gliding
-// along y, recorded by `vroc run` on the native backend.
+// along y, recorded by `vroc run` (on the native backend unless a test asks for another).
 #pragma once
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "subprocess.h"
 #include "test_scenes.h"
@@ -38,15 +40,25 @@ inline const char* kViewerScene = R"({
 
 inline constexpr int kViewerSceneBodies = 4;  // as written above: floor, thrown, resting, glider
 
-/// Writes the scene into `dir` and records a `vroc run` of `seconds` into dir/<name>.
+/// Writes the scene into `dir` and records a `vroc run` of `seconds` on `backend` into dir/<name>
+/// (with its view.html unless `extra` says --no-view).
 inline std::filesystem::path recordViewerRun(const std::filesystem::path& dir, const std::string& name,
-                                             double seconds = 1.0) {
+                                             double seconds = 1.0, const std::string& backend = "native",
+                                             const std::vector<std::string>& extra = {}) {
     const auto scene = writeFile(dir / "viewer_test.json", kViewerScene);
-    const ProcessResult r = runVroc({"run", scene.string(), "--backend", "native", "--duration",
-                                     std::to_string(seconds), "-o", (dir / name).string()},
-                                    dir);
+    std::vector<std::string> args{"run",        scene.string(),          "--backend", backend,
+                                  "--duration", std::to_string(seconds), "-o",        (dir / name).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const ProcessResult r = runVroc(args, dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return dir / name;
+}
+
+/// The page's embedded data ("vroc-view/1", docs/viewer.md) as JSON.
+inline nlohmann::json pageData(const std::filesystem::path& page) {
+    const std::string html = readText(page.string());
+    const std::size_t at = html.find('>', html.find("id=\"vroc-data\"")) + 1;
+    return nlohmann::json::parse(html.substr(at, html.find("</script>", at) - at));
 }
 
 }  // namespace vroc::test

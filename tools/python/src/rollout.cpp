@@ -9,9 +9,9 @@
 #include "state_rows.h"
 #include "vroc/core/errors.h"
 #include "vroc/core/state_hash.h"
-#include "vroc/harness/backend_selection.h"
-#include "vroc/harness/run_pool.h"
-#include "vroc/harness/run_trace.h"
+#include "vroc/harness/pool/run_pool.h"
+#include "vroc/harness/runs/backend_selection.h"
+#include "vroc/harness/runs/run_trace.h"
 
 namespace vroc::python {
 namespace {

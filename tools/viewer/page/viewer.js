@@ -6,7 +6,7 @@
 (function () {
   'use strict';
 
-  var GHOST_OPACITY = 0.5;      // overlay mode: every view's main run, translucent
+  var GHOST_OPACITY = 0.6;      // overlay mode: every view's main run, translucent
   var MEMBER_OPACITY = 0.14;    // ensemble members around the median
   var EVENT_LIFE_S = 0.12;      // [s] a contact marker stays this long after its event
   var MAX_MARKERS = 48;         // per run
@@ -17,8 +17,9 @@
   var state = { frame: 0, playing: false, speed: 1, simTime: 0, overlay: false, colour: 'body', reference: 0,
                 events: true, penetration: true, members: true, lastWall: 0 };
   var three = {};               // renderer, scene, camera, controls, lights
-  var runs = [];                // per data.runs entry: {data, poses, flags, events, group, bodies: [{object, materials}], markers}
-  var views = [];               // [{key, label, main: run index, members: [run indices]}]
+  var runs = [];                // per data.runs entry: {data, view, poses, flags, events, group, bodies: [{object, materials}], markers}
+  var views = [];               // [{key, label, tint, main: run index, members: [run indices]}]
+  var viewOfRun = [];           // data.runs index -> views index
   var staticGroup = null;
 
   // ---- decoding -------------------------------------------------------------------------------
@@ -81,6 +82,10 @@
 
   // ---- colours --------------------------------------------------------------------------------
   function bodyColour(k) { return new THREE.Color().setHSL(((k * 137.508) % 360) / 360, 0.7, 0.5); }
+  // Ghosts: every engine's runs overlaid in one view, each engine in its tint (data.runs[r].tint,
+  // tools/viewer/src/engine_tints.h: Okabe-Ito, in the recording's order), as its label and legend
+  // entry show it. Colour by distance keeps the distance colours; the labels still carry the tints.
+  function ghosts() { return state.overlay && views.length > 1; }
   // Distance [m] -> blue (<= collision distance) ... red (>= 1 m), on a log scale.
   function distanceColour(d) {
     var lo = Math.log10(Math.max(1e-9, data.collision_distance)), hi = 0;
@@ -110,7 +115,7 @@
   }
   function buildRun(r) {
     var d = data.runs[r];
-    var run = { data: d, poses: float32sOf(d.poses), flags: d.has_penetration ? bytesOf(d.penetrating) : null,
+    var run = { data: d, view: viewOfRun[r], poses: float32sOf(d.poses), flags: d.has_penetration ? bytesOf(d.penetrating) : null,
                 events: float32sOf(d.events), group: new THREE.Group(), bodies: [], markers: [] };
     var opacity = d.median ? 1 : MEMBER_OPACITY;
     data.bodies.forEach(function (body, b) {
@@ -149,8 +154,9 @@
       var key = d.member < 0 ? 'run:' + d.label : 'ensemble:' + d.backend;
       if (!(key in byKey)) {
         byKey[key] = views.length;
-        views.push({ key: key, label: d.member < 0 ? d.label : d.backend + ' (ensemble)', main: -1, members: [] });
+        views.push({ key: key, label: d.member < 0 ? d.label : d.backend + ' (ensemble)', tint: d.tint, main: -1, members: [] });
       }
+      viewOfRun[r] = byKey[key];
       var v = views[byKey[key]];
       if (d.median && v.main < 0) v.main = r; else v.members.push(r);
     });
@@ -168,11 +174,13 @@
     return (run.flags[bit >> 3] >> (bit & 7) & 1) === 1;
   }
   function referenceRun() { return runs[views[state.reference].main]; }
-  // The colour a body shows (before lighting): its own, or its distance from the reference run's
-  // same body (the per-body term of the reports' divergence, harness::maxPositionError).
+  // The colour a body shows (before lighting): its own, its engine's tint as a ghost, or its
+  // distance from the reference run's same body (the per-body term of the reports' divergence,
+  // harness::maxPositionError).
   function displayColour(run, frame, k) {
-    if (state.colour !== 'distance') return bodyColour(k);
-    return distanceColour(poseAt(run, frame, k).position.distanceTo(poseAt(referenceRun(), frame, k).position));
+    if (state.colour === 'distance')
+      return distanceColour(poseAt(run, frame, k).position.distanceTo(poseAt(referenceRun(), frame, k).position));
+    return ghosts() ? new THREE.Color(views[run.view].tint) : bodyColour(k);
   }
   function updateRun(run, frame, opacity) {
     run.bodies.forEach(function (o, k) {
@@ -295,7 +303,12 @@
       three.camera.updateProjectionMatrix();
       renderer.render(three.scene, three.camera);
       var label = document.createElement('div');
-      label.textContent = state.overlay ? 'overlay: ' + views.map(function (v) { return v.label; }).join(', ') : views[i].label;
+      if (state.overlay) {
+        label.appendChild(document.createTextNode('overlay: '));
+        views.forEach(function (v) { label.appendChild(engineEntry(v)); });
+      } else {
+        label.appendChild(engineEntry(views[i]));
+      }
       label.style.left = rect.x + 4 + 'px';
       label.style.top = rect.y + 4 + 'px';
       labels.appendChild(label);
@@ -359,6 +372,26 @@
     });
     return out;
   }
+  // The engines' entries of an element (legend or labels) as drawn: name and swatch colour.
+  function drawnEntries(id) {
+    return Array.prototype.map.call(document.querySelectorAll('#' + id + ' .vroc-engine'), function (e) {
+      var rgb = getComputedStyle(e.querySelector('.vroc-swatch')).backgroundColor.match(/\d+/g).map(Number);
+      return { label: e.textContent, tint: '#' + new THREE.Color(rgb[0] / 255, rgb[1] / 255, rgb[2] / 255).getHexString() };
+    });
+  }
+  // The 3 x 3 pixels drawn around (x, y) [CSS px from the window's top left] as "#rrggbb", read
+  // back from the canvas (its drawing buffer is kept: preserveDrawingBuffer), rows top to bottom.
+  function drawnPixels(x, y) {
+    var gl = three.renderer.getContext(), ratio = three.renderer.getPixelRatio(), L = layout(), rgba = new Uint8Array(4);
+    var out = [];
+    for (var dy = -1; dy <= 1; ++dy)
+      for (var dx = -1; dx <= 1; ++dx) {
+        var px = Math.round((x - L.left) * ratio) + dx, py = gl.drawingBufferHeight - 1 - Math.round((y - L.top) * ratio) - dy;
+        gl.readPixels(px, py, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
+        out.push('#' + new THREE.Color(rgba[0] / 255, rgba[1] / 255, rgba[2] / 255).getHexString());
+      }
+    return out;
+  }
   function numbers(text) { return text ? text.split(',').map(Number).filter(function (x) { return isFinite(x); }) : []; }
   function selfTest() {
     var params = hashParams(), probes = [];
@@ -370,8 +403,9 @@
       probeFrames.forEach(function (f) {
         probeBodies.forEach(function (b) {
           views.forEach(function (view, v) {
-            var p = project(b, v, f, probeSize);
-            probes.push({ frame: f, body: b, view: v, x: p.x, y: p.y, colour: colourOf(b, v, f) });
+            var p = project(b, v, f, probeSize), out = { frame: f, body: b, view: v, x: p.x, y: p.y, colour: colourOf(b, v, f) };
+            if (f === state.frame && !probeSize) out.pixels = drawnPixels(p.x, p.y);
+            probes.push(out);
           });
         });
       });
@@ -381,6 +415,8 @@
       ok: window.vrocErrors.length === 0 && !!three.renderer, bodies: data.bodies.length, moving_bodies: data.moving_bodies,
       frames: data.times.length, recorded_frames: data.recorded_frames, stride: data.stride, runs: data.runs.length,
       backends: Object.keys(runsPerBackend), views: views.map(function (v) { return v.label; }), overlay: state.overlay,
+      engines: views.map(function (v) { return { label: v.label, tint: v.tint }; }),
+      legend: three.renderer ? drawnEntries('vroc-legend') : [], labels: three.renderer ? drawnEntries('vroc-labels') : [],
       frame: state.frame, time: data.times[state.frame], errors: window.vrocErrors.slice(),
       resources: performance.getEntriesByType('resource').length, notes: data.notes,
       load_ms: Math.round(performance.now()), probes: probes,
@@ -413,7 +449,7 @@
     $('vroc-step-back').addEventListener('click', function () { setPlaying(false); setFrame(state.frame - 1); });
     $('vroc-speed').addEventListener('change', function (e) { state.speed = Number(e.target.value); });
     $('vroc-overlay').checked = state.overlay;
-    $('vroc-overlay').addEventListener('change', function (e) { state.overlay = e.target.checked; render(); });
+    $('vroc-overlay').addEventListener('change', function (e) { state.overlay = e.target.checked; legend(); render(); });
     $('vroc-colour').value = state.colour;
     $('vroc-colour').addEventListener('change', function (e) { state.colour = e.target.value; legend(); render(); });
     views.forEach(function (v, i) {
@@ -437,13 +473,27 @@
     $('vroc-notes').textContent = data.notes.join(' \u2022 ');
     if (!views.some(function (v) { return v.members.length > 0; })) $('vroc-members').parentNode.hidden = true;
   }
+  // A view's name after a swatch of its engine's tint: in the views' labels and the legend.
+  function engineEntry(v) {
+    var entry = document.createElement('span'), swatch = document.createElement('span');
+    entry.className = 'vroc-engine';
+    swatch.className = 'vroc-swatch';
+    swatch.style.background = v.tint;
+    entry.appendChild(swatch);
+    entry.appendChild(document.createTextNode(v.label));
+    return entry;
+  }
   function legend() {
-    var text = 'real: wireframe \u2022 virtual: shaded \u2022 tracked: orange edges \u2022 contacts: yellow \u2022 red glow: penetration deeper than ' +
+    var box = document.getElementById('vroc-legend');
+    box.innerHTML = '';
+    views.forEach(function (v) { box.appendChild(engineEntry(v)); });
+    var text = (ghosts() && state.colour !== 'distance' ? 'ghosts in their engine\'s tint \u2022 ' : '') +
+               'real: wireframe \u2022 virtual: shaded \u2022 tracked: orange edges \u2022 contacts: yellow \u2022 red glow: penetration deeper than ' +
                (1000 * data.collision_distance).toPrecision(2) + ' mm';
     if (state.colour === 'distance')
       text += ' \u2022 colour: distance from ' + views[state.reference].label + ', blue \u2264 ' +
               (1000 * data.collision_distance).toPrecision(2) + ' mm \u2026 red \u2265 1 m (log)';
-    document.getElementById('vroc-legend').textContent = text;
+    box.appendChild(document.createTextNode(text));
   }
   function start() {
     var canvas = document.getElementById('vroc-canvas');
@@ -476,7 +526,7 @@
     selfTest: selfTest,
     setFrame: setFrame,
     setTime: function (t) { return setFrame(frameAtTime(t)); },
-    setOverlay: function (on) { state.overlay = !!on; render(); },
+    setOverlay: function (on) { state.overlay = !!on; legend(); render(); },
     project: project,
     colourOf: colourOf,
     render: function () { render(); }

@@ -7,7 +7,7 @@
 #include "vroc/core/errors.h"
 #include "vroc/core/frame_loop.h"
 #include "vroc/core/state_hash.h"
-#include "vroc/harness/run_trace.h"
+#include "vroc/harness/runs/run_trace.h"
 
 namespace vroc::viewer {
 namespace {

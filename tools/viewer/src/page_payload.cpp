@@ -89,6 +89,7 @@ Json runJson(const ViewerRun& run) {
             {"label", run.label},
             {"member", run.member},
             {"median", run.median},
+            {"tint", run.tint},
             {"poses", base64(packedPoses(run))},
             {"penetrating", base64(packedFlags(run.penetrating))},
             {"has_penetration", !run.penetrating.empty()},

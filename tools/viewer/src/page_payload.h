@@ -8,6 +8,7 @@
 //                page/viewer.js, which builds THREE.Quaternion(x, y, z, w) (three.js takes x, y, z, w too).
 //   penetrating: bits, frame-major: bit (f * moving + k) set when body k penetrates at frame f.
 //   events:      Float32 [event][6] = t body_a body_b px py pz (scene body indices).
+// Each run also names its engine's tint ("#rrggbb", engine_tints.h).
 #pragma once
 
 #include <string>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "penetration_flags.h"
 
-#include "vroc/harness/neutral_distance.h"
+#include "vroc/harness/metrics/neutral_distance.h"
 
 namespace vroc::viewer {
 

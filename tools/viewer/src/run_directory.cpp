@@ -56,7 +56,11 @@ RunDirectory fromCompare(const fs::path& dir, const fs::path& file, const Json& 
     for (const Json& b : field<Json>(doc, "/backends"_json_pointer, file)) {
         const std::string name = b.value("name", "");
         if (name.empty()) throw InputError(file.string() + ": /backends: a backend without a name");
-        out.runs.push_back({name, name, dir / name / "trajectory.csv", dir / name / "events.csv",
+        // With both footings (--footing both) a backend runs twice: its key names the run's folder
+        // ("bullet-equal") and its label tells the two apart on the page ("bullet (equal footing)").
+        const std::string key = b.value("key", name);
+        const std::string label = b.value("label", name);
+        out.runs.push_back({name, label, dir / key / "trajectory.csv", dir / key / "events.csv",
                             static_cast<std::size_t>(frames) + 1});
     }
     return out;

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "vroc/harness/ensemble.h"
+#include "vroc/harness/commands/ensemble.h"
 
 namespace vroc::viewer {
 

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "body_geometry.h"
+#include "engine_tints.h"
 #include "ensemble_replay.h"
 #include "frame_selection.h"
 #include "penetration_flags.h"
@@ -89,7 +90,7 @@ std::vector<ViewerRun> keptFrames(std::vector<LoadedRun>& loaded, const std::vec
     std::vector<ViewerRun> out;
     const recording::RecordedTrajectory& first = loaded.front().trajectory;
     for (LoadedRun& r : loaded) {
-        ViewerRun run{r.backend, r.label, r.member, r.member < 0, {}, {}, std::move(r.events)};
+        ViewerRun run{r.backend, r.label, r.member, r.member < 0, {}, {}, std::move(r.events), {}};
         for (std::size_t f : frames) {
             if (std::abs(r.trajectory.times[f] - first.times[f]) > 1e-9 * std::max(1.0, std::abs(first.times[f])))
                 throw InputError(r.label + ": frame " + std::to_string(f) +
@@ -150,6 +151,7 @@ ViewerData loadViewerData(const std::vector<fs::path>& dirs, const ViewerOptions
     for (std::size_t f : sel.frames) data.times.push_back(loaded.front().trajectory.times[f]);
     data.runs = keptFrames(loaded, sel.frames);
     markMedians(data.runs);
+    assignEngineTints(data.runs, data.notes);
     if (options.penetration && data.moving_bodies <= options.penetration_max_bodies)
         addPenetration(scene, data.runs);
     else if (options.penetration)

@@ -58,6 +58,13 @@ struct IslandScratch {
     std::vector<int> slot_of_root;  // per body: its island's pool slot this step, or -1
     std::vector<IslandSolve*> work, shared, spread;
     std::vector<int> touches;  // per body: manifolds this step (deferImpacts)
+    // Local protection solves (native.protection_ring): per body, its ring (touching steps from a
+    // body whose tick came; -1 outside), whether it is held as ground, whether its island is solved
+    // locally (per root); the breadth-first queue.
+    std::vector<int> ring;
+    std::vector<std::uint8_t> held_ground;
+    std::vector<std::uint8_t> local_root;
+    std::vector<int> ring_queue;
 };
 
 }  // namespace vroc::native

@@ -72,13 +72,29 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
         return islands_.islandOf(infinite_mass_[static_cast<std::size_t>(ps.a)] ? ps.b : ps.a);
     };
-    // The due islands' touching pairs are refreshed from their cached features.
+    // The island's tick ends on the grid of sub-steps (see below); a solve on the grid runs exactly
+    // one sub-step to the next grid point.
+    const double h = gridTick(t);
+    const bool on_grid =
+        std::abs(h - frame_dt_ / static_cast<double>(settings_.contact_substeps)) <= 1e-6 * frame_dt_;
+    const bool any_local = markLocalSolves(due_root, kTickCame, t, any_due && !on_grid);
+    // A body the step's solve moves: in a due island, and not held as ground by a local solve.
+    auto solvesBody = [&](int body) {
+        const auto b = static_cast<std::size_t>(body);
+        return !any_local || (!infinite_mass_[b] && sc.held_ground[b] == 0 &&
+                              (sc.local_root[static_cast<std::size_t>(islands_.islandOf(body))] == 0 || sc.ring[b] >= 0));
+    };
+    // The due islands' touching pairs are refreshed from their cached features (in a local solve,
+    // the pairs of the bodies it moves).
     if (any_due) {
         std::vector<int>& more = sc.more;
         more.clear();
-        for (int p : touching_)
-            if (pairs_[static_cast<std::size_t>(p)].sampled_step != step_index_ && due_root[static_cast<std::size_t>(islandOfPair(p))])
+        for (int p : touching_) {
+            const PairState& ps = pairs_[static_cast<std::size_t>(p)];
+            if (ps.sampled_step != step_index_ && due_root[static_cast<std::size_t>(islandOfPair(p))] &&
+                (solvesBody(ps.a) || solvesBody(ps.b)))
                 more.push_back(p);
+        }
         std::vector<PairSample>& extra = step_extra_;
         samplePairs(more, t, extra);
         samples.insert(samples.end(), std::make_move_iterator(extra.begin()), std::make_move_iterator(extra.end()));
@@ -94,10 +110,6 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // a sliver solve. On the grid, islands solved off it (at an impact) fall back in step, so all
     // resting islands share their solve times: a settled bin of 100 separate islands is one internal
     // step per sub-step, not one per island.
-    const double h = gridTick(t);
-    // A solve on the grid runs exactly one sub-step to the next grid point (statistics only).
-    const bool on_grid =
-        std::abs(h - frame_dt_ / static_cast<double>(settings_.contact_substeps)) <= 1e-6 * frame_dt_;
     std::vector<ContactManifold>& manifolds = sc.manifolds;
     std::vector<std::pair<int, int>>& cache_of = sc.cache_of;  // (pair, part pair) per manifold
     manifolds.clear();
@@ -191,7 +203,15 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     const double resting_speed = scene_.gravity.norm() * h;
     auto solveOne = [&](IslandSolve& is, const ContactSolverSettings& settings) {
         is.local.reserve(is.bodies.size());
-        for (int id : is.bodies) is.local.push_back(bodies_[static_cast<std::size_t>(id)]);
+        for (int id : is.bodies) {
+            is.local.push_back(bodies_[static_cast<std::size_t>(id)]);
+            if (sc.held_ground[static_cast<std::size_t>(id)] != 0) {
+                // Held as ground by a local solve: infinite mass, moving as its drift does now.
+                RigidBody& ground = is.local.back();
+                ground.kinematic_angular_velocity = ground.angularVelocity();
+                ground.is_kinematic = true;
+            }
+        }
         auto localOf = [&](int id) {
             return static_cast<int>(std::lower_bound(is.bodies.begin(), is.bodies.end(), id) - is.bodies.begin());
         };
@@ -252,6 +272,11 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             ++stats_.solves_on_grid;
         else
             ++stats_.solves_protection;
+        const bool local = sc.local_root[static_cast<std::size_t>(is->root)] != 0;
+        if (local) {
+            ++stats_.solves_local;
+            for (int body : is->bodies) stats_.local_held_bodies += sc.held_ground[static_cast<std::size_t>(body)];
+        }
         stats_.contact_points += is->report.points;
         stats_.contact_sweeps += is->report.sweeps;
         stats_.shock_sweeps += is->report.shock_sweeps;
@@ -273,7 +298,8 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         }
         for (std::size_t k = 0; k < is->bodies.size(); ++k) {
             const int body = is->bodies[k];
-            if (infinite_mass_[static_cast<std::size_t>(body)]) continue;
+            if (infinite_mass_[static_cast<std::size_t>(body)] || sc.held_ground[static_cast<std::size_t>(body)] != 0)
+                continue;   // held as ground: its drift from its own last solve goes on
             if (asleep_[static_cast<std::size_t>(body)] != 0) wake(body);   // touched: awake again
             if (is->impulses[k].supported) {
                 startDrift(body, is->impulses[k], t, h);
@@ -282,7 +308,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             }
             setTick(body, t + h);
         }
-        maybeSleep(is->bodies, t);
+        if (!local) maybeSleep(is->bodies, t);   // a local solve saw part of the island
     }
     // Per-sample totals for the events.
     {
@@ -300,8 +326,65 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
         if (s.manifolds.empty())
             for (PersistentManifold& pm : ps.manifolds) pm.clear();
-        scheduleSampled(s, t, !s.manifolds.empty());
+        // A pair with a body held as ground was solved against a guess of that body's motion: it
+        // keeps the bound of a pair no solve holds.
+        const bool against_ground = sc.held_ground[static_cast<std::size_t>(ps.a)] != 0 ||
+                                    sc.held_ground[static_cast<std::size_t>(ps.b)] != 0;
+        scheduleSampled(s, t, !s.manifolds.empty() && !against_ground);
     }
+}
+
+bool NativeBackend::markLocalSolves(const std::vector<std::uint8_t>& due_root, std::uint8_t tick_came, double t,
+                                   bool off_grid) {
+    // A protection tick comes for the bodies of a pair that could close too far before the grid
+    // tick: the rest of a pile has no reason to be solved again. Off the grid, an island due only
+    // because ticks came (no new contact) solves the bodies within native.protection_ring touching
+    // steps of those whose tick came; the next ring enters as ground moving at its drift velocity,
+    // and keeps its drift (docs/native-dynamics.md, "Local protection solves").
+    IslandScratch& sc = island_scratch_;
+    sc.ring.assign(bodies_.size(), -1);
+    sc.held_ground.assign(bodies_.size(), 0);
+    sc.local_root.assign(bodies_.size(), 0);
+    const int reach = settings_.protection_ring;
+    if (!off_grid || reach < 0) return false;
+    const double tick = frame_dt_ / static_cast<double>(settings_.contact_substeps);
+    const double quiet_speed = scene_.gravity.norm() * tick;
+    std::vector<int>& queue = sc.ring_queue;
+    queue.clear();
+    for (int p : touching_) {
+        const PairState& ps = pairs_[static_cast<std::size_t>(p)];
+        for (int body : {ps.a, ps.b}) {
+            const auto b = static_cast<std::size_t>(body);
+            if (infinite_mass_[b] || tick_end_[b] > t || sc.ring[b] >= 0) continue;
+            const auto root = static_cast<std::size_t>(islands_.islandOf(body));
+            if (due_root[root] != tick_came) continue;
+            sc.local_root[root] = 1;
+            sc.ring[b] = 0;
+            queue.push_back(body);
+        }
+    }
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const int body = queue[head];
+        for (int p : body_pairs_[static_cast<std::size_t>(body)]) {
+            const PairState& ps = pairs_[static_cast<std::size_t>(p)];
+            if (!ps.touching) continue;
+            const int other = ps.a == body ? ps.b : ps.a;
+            const auto o = static_cast<std::size_t>(other);
+            if (infinite_mass_[o] || sc.ring[o] >= 0) continue;
+            // Only a quiet body is held (moving slower than gravity makes it in a tick): one in
+            // motion carries momentum the local solve must pass on (a ball's blow running along a
+            // row of boxes, trapped between held neighbours, squeezed them into each other), so it
+            // joins the solve and the search goes on past it.
+            const RigidBody& rb = bodies_[o];
+            const bool quiet = rb.velocity.norm() + rb.angularVelocity().norm() * shapes_[o].outer_radius <= quiet_speed;
+            sc.ring[o] = std::min(sc.ring[static_cast<std::size_t>(body)] + 1, quiet ? reach + 1 : reach);
+            if (sc.ring[o] > reach)
+                sc.held_ground[o] = 1;
+            else
+                queue.push_back(other);
+        }
+    }
+    return !queue.empty();
 }
 
 void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,

@@ -164,6 +164,10 @@ private:
     /// [s] the length of an island tick starting at t: to the first point of the sub-step grid
     /// (anchored at the frame end) at least half a sub-step away.
     double gridTick(double t) const;
+    /// Local protection solves (native.protection_ring): which islands due only because ticks came
+    /// (`due_root[root] == tick_came`) are solved locally at an `off_grid` time t, each body's ring
+    /// and which bodies are held as ground (island_scratch_.ring, held_ground, local_root); true if any is.
+    bool markLocalSolves(const std::vector<std::uint8_t>& due_root, std::uint8_t tick_came, double t, bool off_grid);
     /// Restitution and friction impulses at approaching manifolds, applied to `bodies` (one island's
     /// local copies; manifolds index them); a `resting` one (held at its last solve) approaching
     /// slower than `resting_speed` [m/s] is stopped plastically (e = 0); `tick` [s] is the island's

@@ -34,6 +34,11 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "relative velocity by more than this (0: always run every sweep)"});
     s.push_back({"native.contact_substeps", T::Integer, "1", 1, 1000, {},
                  "island ticks per frame: the contact phase's step is frame_dt / this"});
+    s.push_back({"native.protection_ring", T::Integer, "-1", -1, 1000, {},
+                 "a protection tick (an island solved off the grid because a touching pair could close too "
+                 "far) solves only the bodies within this many touching steps of the bodies whose tick came; "
+                 "the next ring of bodies enters as ground moving at its drift velocity. -1: the whole island "
+                 "(docs/native-dynamics.md, \"Local protection solves\")"});
     s.push_back({"native.manifold_reuse",
                  T::Real,
                  "0.02",
@@ -123,6 +128,8 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.solver_tolerance")) n.solver_tolerance = settings.real("native.solver_tolerance");
     if (has("native.contact_substeps"))
         n.contact_substeps = static_cast<int>(settings.integer("native.contact_substeps"));
+    if (has("native.protection_ring"))
+        n.protection_ring = static_cast<int>(settings.integer("native.protection_ring"));
     if (has("native.manifold_reuse")) n.manifold_reuse = settings.real("native.manifold_reuse");
     if (has("native.touching"))
         n.touching = settings.text("native.touching") == "speculative" ? TouchingRegime::Speculative

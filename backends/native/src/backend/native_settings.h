@@ -38,6 +38,9 @@ struct NativeSettings {
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
     TouchingRegime touching = TouchingRegime::Protected;   ///< how touching islands are scheduled (speculative: experimental)
     bool warm_start = true;                 ///< contact phase starts from the previous impulses
+    /// A protection tick (off the grid) solves the bodies within this many touching steps of a body
+    /// whose tick came, with the next ring held as ground; -1: the whole island
+    int protection_ring = -1;
     /// [-] fraction of the collision distance: a touching pair whose bodies moved less than this
     /// relative to each other since its last query keeps that manifold, carried along (0: query always)
     double manifold_reuse = 0.02;

@@ -36,6 +36,10 @@ struct NativeStatistics {
     std::int64_t solves_on_grid = 0;
     std::int64_t solves_protection = 0;
     std::int64_t solves_new_contact = 0;
+    /// Of the protection ticks, those that solved only the bodies near the due ones
+    /// (native.protection_ring), and the bodies they held as ground.
+    std::int64_t solves_local = 0;
+    std::int64_t local_held_bodies = 0;
     std::int64_t solved_island_bodies = 0;  ///< bodies of the islands solved, summed over solves
 
     /// Shared names (docs/backend-contract.md) as they are; the rest get the "native." prefix.
@@ -69,6 +73,8 @@ struct NativeStatistics {
         s["islands_slept"] = static_cast<double>(islands_slept);
         s["solves_on_grid"] = static_cast<double>(solves_on_grid);
         s["solves_protection"] = static_cast<double>(solves_protection);
+        s["solves_local"] = static_cast<double>(solves_local);
+        s["local_held_bodies"] = static_cast<double>(local_held_bodies);
         s["solves_new_contact"] = static_cast<double>(solves_new_contact);
         s["solved_bodies_per_solve"] =
             static_cast<double>(solved_island_bodies) / static_cast<double>(std::max<std::int64_t>(1, step_solves));

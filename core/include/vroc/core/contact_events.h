@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// What one pair's contact points say after an internal step, and the collision event they make
-// (docs/events.md): shared by the backends that read contacts from an engine (bullet, ode,
-// mujoco). When a pair starts or continues a contact is each backend's own rule.
+// What an engine's contacts say after an internal step, and the collision event a pair's contacts
+// make (docs/events.md): the vocabulary of the backends that read contacts from an engine (bullet,
+// ode, mujoco, dart). When a pair's contact starts is ContactPairTracker's (contact_pair_tracker.h).
 #pragma once
 
 #include <map>
@@ -11,14 +11,22 @@
 
 namespace vroc {
 
+/// One contact point after the internal step that solved it.
+struct SolvedContact {
+    int body_a = -1, body_b = -1;       ///< scene body indices, body_a < body_b
+    Vec3 point = Vec3::Zero();          ///< [m] world
+    Vec3 normal_a_to_b = Vec3::Zero();  ///< unit, world
+    double impulse = 0.0;               ///< [N s] normal impulse in the step; only > 0 counts
+};
+
+/// One pair's impulse-carrying points of a step.
 struct PairContacts {
-    bool in_contact = false;          ///< a point within the collision distance, or one carrying impulse
     double impulse = 0.0;             ///< [N s] normal impulse of the step, summed over the pair's points
     Vec3 point_sum = Vec3::Zero();    ///< [m] world, over impulse-carrying points
     int point_count = 0;
     Vec3 normal_sum = Vec3::Zero();   ///< impulse-weighted unit normals from a to b, world
 
-    /// One point that carried `impulse` > 0 [N s] along the unit `normal_a_to_b`; also marks contact.
+    /// One point that carried `impulse` > 0 [N s] along the unit `normal_a_to_b`.
     void addImpulse(const Vec3& point, const Vec3& normal_a_to_b, double impulse);
     /// The collision event at `time` [s]: mean point, impulse-weighted normal, summed impulse.
     /// Needs point_count > 0.

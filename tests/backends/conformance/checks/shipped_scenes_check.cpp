@@ -9,7 +9,7 @@
 
 #include "checks/check_support.h"
 #include "vroc/core/errors.h"
-#include "vroc/harness/scene_support.h"
+#include "vroc/harness/runs/scene_support.h"
 
 namespace vroc::conformance {
 namespace {

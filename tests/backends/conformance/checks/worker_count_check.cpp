@@ -5,7 +5,7 @@
 
 #include "checks/check_support.h"
 #include "vroc/core/state_hash.h"
-#include "vroc/harness/scene_support.h"
+#include "vroc/harness/runs/scene_support.h"
 
 namespace vroc::conformance {
 namespace {

@@ -46,6 +46,9 @@ struct ViewerRun {
     /// harness's neutral distance (harness::closestDistance). Empty when not computed.
     std::vector<std::vector<bool>> penetrating;
     std::vector<CollisionEvent> events;  ///< as recorded (all of them; the page shows each briefly)
+    /// "#rrggbb": its engine's tint (src/engine_tints.h), shared by an ensemble's members on one
+    /// backend; its ghosts, legend entry and view label show it.
+    std::string tint;
 };
 
 struct ViewerData {

@@ -25,7 +25,8 @@ struct ViewerOptions {
 };
 
 /// Reads every directory: a `vroc run` output (run.json, trajectory.csv, events.csv), a
-/// `vroc compare` output (metrics.json and <backend>/trajectory.csv, events.csv) or a
+/// `vroc compare` output (metrics.json and <backend>/trajectory.csv, events.csv; with both footings
+/// <key>/, e.g. bullet-equal/, each run labelled by its footing) or a
 /// `vroc ensemble` output (metrics.json; its members are replayed here, since ensembles keep no
 /// trajectories). All must be of one scene at one frame step. Throws InputError naming the file and
 /// what was expected (a missing or truncated trajectory, a scene changed since the run, ...).
