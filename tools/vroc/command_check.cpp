@@ -62,7 +62,7 @@ std::filesystem::path stressScenesDir(const std::string& option) {
 }
 
 int check(CheckArgs& a, const Context& context) {
-    const auto backends = footedBackends(a.footing, a.backends, a.assignments);
+    const auto backends = footedBackends(a.footing, a.backends, a.assignments, true);
     a.options.progress = !a.quiet;
     a.options.command_line = context.command_line;
     const bool stress = a.options.stress || std::any_of(a.options.only.begin(), a.options.only.end(), harness::isStressScenarioId);

@@ -39,7 +39,7 @@ int compare(CompareArgs& a, const Context& context) {
     if (!(a.options.duration > 0)) throw InputError("--duration: expected a positive number of seconds");
     if (a.dt && !(*a.dt > 0)) throw InputError("--dt: expected a positive number of seconds");
     if (!(a.options.window > 0) || a.options.windows < 1) throw InputError("--window/--windows: expected positive values");
-    const auto backends = footedBackends(a.footing, a.backends, a.assignments);
+    const auto backends = footedBackends(a.footing, a.backends, a.assignments, true);
     announceFooting("compare", backends, a.quiet);
     const Scene scene = loadScene(a.scene_file);
     a.options.frame_dt = a.dt;

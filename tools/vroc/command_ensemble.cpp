@@ -38,7 +38,7 @@ struct EnsembleArgs {
 };
 
 int ensemble(EnsembleArgs& a, const Context& context) {
-    const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
+    const auto backends = footedBackends(a.footing, a.backends, a.assignments, false);
     announceFooting("ensemble", backends, a.quiet);
     if (!a.perturb.empty()) a.options.perturb = harness::parsePerturbation(a.perturb);
     if (!a.dt.empty()) a.options.frame_dt = parseFrameStep(a.dt);

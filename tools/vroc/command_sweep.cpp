@@ -38,7 +38,7 @@ struct SweepArgs {
 };
 
 int sweep(SweepArgs& a, const Context& context) {
-    const auto backends = harness::selectBackends(a.backends, a.assignments, footingOf(a.footing));
+    const auto backends = footedBackends(a.footing, a.backends, a.assignments, false);
     announceFooting("sweep", backends, a.quiet);
     if (!a.dts.empty()) a.options.dts = parseFrameSteps(a.dts);
     if (!a.details.empty()) a.options.details = harness::parseDetailLevels(a.details);

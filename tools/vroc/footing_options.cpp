@@ -3,7 +3,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "vroc/core/errors.h"
 #include "vroc/harness/pool/mpi_world.h"
 
 namespace vroc::cli {
@@ -17,21 +16,9 @@ void addFootingOptions(CLI::App& sub, FootingArgs& args) {
     sub.add_option("--footing-substeps", args.substeps, "Internal steps per frame on the equal footing (default 4)");
 }
 
-harness::Footing footingOf(const FootingArgs& args) {
-    if (args.kind == "both")
-        throw InputError(
-            "--footing both: only check and compare run both footings side by side; run this command once "
-            "per footing (--footing defaults, --footing equal)");
-    harness::Footing f;
-    f.kind = harness::footingKind(args.kind);
-    f.substeps = args.substeps;
-    return f;
-}
-
 std::vector<harness::SelectedBackend> footedBackends(const FootingArgs& args, const std::string& list,
-                                                     const std::vector<std::string>& assignments) {
-    if (args.kind == "both") return harness::selectBackendsOnBothFootings(list, assignments, args.substeps);
-    return harness::selectBackends(list, assignments, footingOf(args));
+                                                     const std::vector<std::string>& assignments, bool both_allowed) {
+    return harness::selectBackendsOnFooting(list, assignments, args.kind, args.substeps, both_allowed);
 }
 
 void announceFooting(const std::string& command, const std::vector<harness::SelectedBackend>& backends, bool quiet) {

@@ -23,14 +23,11 @@ struct FootingArgs {
 /// Declares --footing and --footing-substeps on `sub`.
 void addFootingOptions(CLI::App& sub, FootingArgs& args);
 
-/// The footing the options ask for; throws InputError for a word that is not one, and for "both"
-/// (sweep and ensemble run one footing at a time).
-harness::Footing footingOf(const FootingArgs& args);
-
-/// The backends of `list` on the footing the options ask for; with "both", every backend twice
-/// (own defaults, then equal footing), for check and compare.
+/// The backends of `list` on the footing the options ask for (harness::selectBackendsOnFooting);
+/// with "both" (`both_allowed`: check and compare), every backend twice, own defaults then equal
+/// footing. Throws InputError for a word that is not a footing, and for "both" in sweep and ensemble.
 std::vector<harness::SelectedBackend> footedBackends(const FootingArgs& args, const std::string& list,
-                                                     const std::vector<std::string>& assignments);
+                                                     const std::vector<std::string>& assignments, bool both_allowed);
 
 /// On the equal footing or both, "vroc <command>: footing ..." on stderr (rank 0, unless `quiet`);
 /// the defaults footing is the normal case and says nothing.

@@ -5,6 +5,7 @@ import os
 import subprocess
 
 import numpy as np
+import pytest
 
 import vroc
 from conftest import VROC_BIN, scene_path
@@ -53,3 +54,21 @@ def test_sweep_and_ensemble_return_their_verdicts():
 def test_plugins_lists_the_built_in_device_plugins():
     found = {p.get("name") for p in vroc.plugins() if p.get("rejected") is None}
     assert {"analytic", "replay"} <= found
+
+
+def test_both_footings_from_python_equal_the_command():
+    # Bullet steps semi-implicit Euler once per frame at its own defaults and footing_substeps times on
+    # the equal footing: the ballistic check's euler-ratio (the error against the closed form, per
+    # first-order step error) is 1 and 1/3. The same numbers as `vroc check --footing both`.
+    r = vroc.check(backends=["bullet"], only=["ballistic"], footing="both", footing_substeps=3)
+    cells = {c["id"]: c["results"] for c in r.document["results"]["checks"]}
+    ratio = cells["ballistic.euler-ratio"]
+    assert ratio["bullet-defaults"]["footing"] == "defaults" and ratio["bullet-equal"]["footing"] == "equal"
+    assert abs(ratio["bullet-defaults"]["measured"] - 1.0) < 1e-6
+    assert abs(ratio["bullet-equal"]["measured"] - 1.0 / 3.0) < 1e-6
+    cli = subprocess.run([VROC_BIN, "check", "--backends", "bullet", "--only", "ballistic", "--footing", "both",
+                          "--footing-substeps", "3", "-q"], check=True, capture_output=True, text=True)
+    assert "bullet (equal footing)" in cli.stdout
+    for bad in ({"footing": "both"}, {"footing": "level"}, {"footing": "equal", "footing_substeps": 0}):
+        with pytest.raises(ValueError, match="footing"):   # bad input is the module's ValueError
+            vroc.sweep(scene_path("ball_drop.json"), ["bullet"], dts=[1 / 60], duration=0.1, **bad)

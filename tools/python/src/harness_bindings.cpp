@@ -93,7 +93,7 @@ void bindHarness(py::module_& m) {
         "_compare",
         [](const std::string& scene_file, const std::vector<std::string>& backends, const py::handle& settings,
            double duration, std::optional<double> dt, int windows, double window, const std::optional<std::string>& out,
-           int jobs) {
+           int jobs, const std::string& footing, int footing_substeps) {
             harness::CompareOptions o;
             o.duration = duration;
             o.frame_dt = dt;
@@ -105,7 +105,8 @@ void bindHarness(py::module_& m) {
             if (!(o.duration > 0)) throw InputError("compare: duration must be a positive number of seconds");
             if (dt && !(*dt > 0)) throw InputError("compare: dt must be a positive number of seconds");
             if (!(o.window > 0) || o.windows < 1) throw InputError("compare: window and windows must be positive");
-            const auto selected = harness::selectBackends(backendList(backends), assignments(settings));
+            const auto selected =
+                harness::selectBackendsOnFooting(backendList(backends), assignments(settings), footing, footing_substeps, true);
             const Scene scene = loadScene(scene_file);
             return pooled(out, jobs, harness::comparePlan(scene, selected, o), "vroc.compare", [&](harness::RunPool& pool) {
                 return harness::compareDocument(harness::compareScene(scene, selected, o, out ? fs::path(*out) : fs::path(), pool),
@@ -113,19 +114,21 @@ void bindHarness(py::module_& m) {
             });
         },
         py::arg("scene"), py::arg("backends"), py::arg("settings"), py::arg("duration"), py::arg("dt"), py::arg("windows"),
-        py::arg("window"), py::arg("out"), py::arg("jobs"));
+        py::arg("window"), py::arg("out"), py::arg("jobs"), py::arg("footing"), py::arg("footing_substeps"));
 
     m.def(
         "_check",
         [](const std::vector<std::string>& backends, const py::handle& settings, const std::vector<std::string>& only,
-           bool long_set, bool stress, const std::string& scenes_dir, const std::optional<std::string>& out, int jobs) {
+           bool long_set, bool stress, const std::string& scenes_dir, const std::optional<std::string>& out, int jobs,
+           const std::string& footing, int footing_substeps) {
             harness::CheckOptions o;
             o.long_set = long_set;
             o.progress = false;
             o.only = only;
             o.stress = stress;
             o.command_line = "vroc.check";
-            const auto selected = harness::selectBackends(backendList(backends), assignments(settings));
+            const auto selected =
+                harness::selectBackendsOnFooting(backendList(backends), assignments(settings), footing, footing_substeps, true);
             const bool any_stress =
                 stress || std::any_of(only.begin(), only.end(), [](const std::string& id) { return harness::isStressScenarioId(id); });
             if (any_stress) o.scenes_dir = stressScenesDir(scenes_dir);
@@ -140,13 +143,13 @@ void bindHarness(py::module_& m) {
             return d;
         },
         py::arg("backends"), py::arg("settings"), py::arg("only"), py::arg("long_set"), py::arg("stress"),
-        py::arg("scenes_dir"), py::arg("out"), py::arg("jobs"));
+        py::arg("scenes_dir"), py::arg("out"), py::arg("jobs"), py::arg("footing"), py::arg("footing_substeps"));
 
     m.def(
         "_sweep",
         [](const std::string& scene_source, const std::vector<std::string>& backends, const py::handle& settings,
            const std::vector<double>& dts, double duration, int windows, double window, const std::vector<std::string>& vary,
-           const std::optional<std::string>& out, int jobs) {
+           const std::optional<std::string>& out, int jobs, const std::string& footing, int footing_substeps) {
             harness::SweepOptions o;
             if (!dts.empty()) o.dts = dts;
             for (double dt : o.dts)
@@ -158,7 +161,8 @@ void bindHarness(py::module_& m) {
             o.progress = false;
             o.command_line = "vroc.sweep";
             if (!(o.duration > 0)) throw InputError("sweep: duration must be a positive number of seconds");
-            const auto selected = harness::selectBackends(backendList(backends), assignments(settings));
+            const auto selected =
+                harness::selectBackendsOnFooting(backendList(backends), assignments(settings), footing, footing_substeps, false);
             harness::sweepCurves(selected, o.vary);   // a bad vary fails before anything runs
             const harness::SweepScene scene = harness::loadSweepScene(scene_source);
             harness::SweepResult result;
@@ -181,13 +185,13 @@ void bindHarness(py::module_& m) {
             return d;
         },
         py::arg("scene"), py::arg("backends"), py::arg("settings"), py::arg("dts"), py::arg("duration"), py::arg("windows"),
-        py::arg("window"), py::arg("vary"), py::arg("out"), py::arg("jobs"));
+        py::arg("window"), py::arg("vary"), py::arg("out"), py::arg("jobs"), py::arg("footing"), py::arg("footing_substeps"));
 
     m.def(
         "_ensemble",
         [](const std::string& scene_file, const std::vector<std::string>& backends, const py::handle& settings, int members,
            const std::string& perturb, double duration, std::optional<double> dt, std::uint64_t seed,
-           const std::optional<std::string>& out, int jobs) {
+           const std::optional<std::string>& out, int jobs, const std::string& footing, int footing_substeps) {
             harness::EnsembleOptions o;
             o.members = members;
             if (!perturb.empty()) o.perturb = harness::parsePerturbation(perturb);
@@ -198,7 +202,8 @@ void bindHarness(py::module_& m) {
             if (o.members < 2) throw InputError("ensemble: members must be at least 2 per backend");
             if (!(o.duration > 0)) throw InputError("ensemble: duration must be a positive number of seconds");
             if (dt && !(*dt > 0)) throw InputError("ensemble: dt must be a positive number of seconds");
-            const auto selected = harness::selectBackends(backendList(backends), assignments(settings));
+            const auto selected =
+                harness::selectBackendsOnFooting(backendList(backends), assignments(settings), footing, footing_substeps, false);
             if (selected.size() < 2) throw InputError("ensemble compares backends: give at least two");
             const Scene scene = loadScene(scene_file);
             if (dt) o.frame_dt = *dt;
@@ -212,7 +217,8 @@ void bindHarness(py::module_& m) {
             return d;
         },
         py::arg("scene"), py::arg("backends"), py::arg("settings"), py::arg("members"), py::arg("perturb"),
-        py::arg("duration"), py::arg("dt"), py::arg("seed"), py::arg("out"), py::arg("jobs"));
+        py::arg("duration"), py::arg("dt"), py::arg("seed"), py::arg("out"), py::arg("jobs"), py::arg("footing"),
+        py::arg("footing_substeps"));
 
     m.def(
         "_write_report",

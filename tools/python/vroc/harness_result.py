@@ -70,30 +70,40 @@ def _out(out):
     return None if out is None else os.fspath(out)
 
 
-def compare(scene, backends=None, settings=None, duration=5.0, dt=None, windows=10, window=0.25, out=None, jobs=1):
+def compare(scene, backends=None, settings=None, duration=5.0, dt=None, windows=10, window=0.25, out=None, jobs=1,
+            footing="defaults", footing_substeps=4):
     """One scene on several backends (`vroc compare`): divergence, events, invariants, timings.
-    backends: names, the first is the reference (default: all); settings {"backend.key": value}."""
+    backends: names, the first is the reference (default: all); settings {"backend.key": value};
+    footing: "defaults", "equal" (footing_substeps internal steps per frame) or "both" (`--footing`)."""
     return HarnessResult(_vroc._compare(os.fspath(scene), _names(backends), settings, float(duration), dt,
-                                        int(windows), float(window), _out(out), int(jobs)))
+                                        int(windows), float(window), _out(out), int(jobs), str(footing),
+                                        int(footing_substeps)))
 
 
-def check(backends=None, settings=None, only=(), long=False, stress=False, scenes_dir="", out=None, jobs=1):
-    """The closed-form checks (`vroc check`), optionally only some scenarios or with the stress section."""
+def check(backends=None, settings=None, only=(), long=False, stress=False, scenes_dir="", out=None, jobs=1,
+          footing="defaults", footing_substeps=4):
+    """The closed-form checks (`vroc check`), optionally only some scenarios or with the stress section;
+    footing: "defaults", "equal" or "both" (`--footing`)."""
     return HarnessResult(_vroc._check(_names(backends), settings, list(only), bool(long), bool(stress),
-                                      os.fspath(scenes_dir), _out(out), int(jobs)))
+                                      os.fspath(scenes_dir), _out(out), int(jobs), str(footing), int(footing_substeps)))
 
 
-def sweep(scene, backends=None, settings=None, dts=(), duration=2.0, windows=10, window=0.1, vary=(), out=None, jobs=1):
-    """Cost against accuracy over frame steps (`vroc sweep`); vary: ["backend.key=v1,v2", ...]."""
+def sweep(scene, backends=None, settings=None, dts=(), duration=2.0, windows=10, window=0.1, vary=(), out=None, jobs=1,
+          footing="defaults", footing_substeps=4):
+    """Cost against accuracy over frame steps (`vroc sweep`); vary: ["backend.key=v1,v2", ...];
+    footing: "defaults" or "equal" (`--footing`)."""
     return HarnessResult(_vroc._sweep(os.fspath(scene), _names(backends), settings, [float(d) for d in dts],
-                                      float(duration), int(windows), float(window), list(vary), _out(out), int(jobs)))
+                                      float(duration), int(windows), float(window), list(vary), _out(out), int(jobs),
+                                      str(footing), int(footing_substeps)))
 
 
 def ensemble(scene, backends=None, settings=None, members=32, perturb="", duration=4.0, dt=None, seed=1, out=None,
-             jobs=1):
-    """Perturbed members per backend and two-sample tests between backends (`vroc ensemble`)."""
+             jobs=1, footing="defaults", footing_substeps=4):
+    """Perturbed members per backend and two-sample tests between backends (`vroc ensemble`);
+    footing: "defaults" or "equal" (`--footing`)."""
     return HarnessResult(_vroc._ensemble(os.fspath(scene), _names(backends), settings, int(members), perturb,
-                                         float(duration), dt, int(seed), _out(out), int(jobs)))
+                                         float(duration), dt, int(seed), _out(out), int(jobs), str(footing),
+                                         int(footing_substeps)))
 
 
 def write_report(result, out):

@@ -83,6 +83,24 @@ std::vector<SelectedBackend> selectBackends(const std::string& list, const std::
     return out;
 }
 
+std::vector<SelectedBackend> selectBackendsOnFooting(const std::string& list, const std::vector<std::string>& assignments,
+                                                     const std::string& word, int substeps, bool both_allowed) {
+    if (!(substeps >= 1))
+        throw InputError("--footing-substeps: expected a whole number of internal steps per frame >= 1, got " +
+                         std::to_string(substeps));
+    if (word == "both") {
+        if (!both_allowed)
+            throw InputError(
+                "--footing both: only check and compare run both footings side by side; run this command once "
+                "per footing (--footing defaults, --footing equal)");
+        return selectBackendsOnBothFootings(list, assignments, substeps);
+    }
+    Footing f;
+    f.kind = footingKind(word);
+    f.substeps = substeps;
+    return selectBackends(list, assignments, f);
+}
+
 std::vector<SelectedBackend> selectBackendsOnBothFootings(const std::string& list,
                                                           const std::vector<std::string>& assignments, int substeps) {
     Footing equal;

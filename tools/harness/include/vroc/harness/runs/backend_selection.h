@@ -60,6 +60,13 @@ std::vector<SelectedBackend> selectBackends(const std::string& list, const std::
 std::vector<SelectedBackend> selectBackendsOnBothFootings(const std::string& list,
                                                           const std::vector<std::string>& assignments, int substeps);
 
+/// The backends of `list` on the footing named `word` (the command line's --footing and the Python
+/// module's footing=): "defaults" or "equal" (`substeps` internal steps per frame), or, where
+/// `both_allowed` (check and compare), "both" (selectBackendsOnBothFootings). Throws InputError for
+/// another word, for "both" where it is not allowed, and for substeps < 1.
+std::vector<SelectedBackend> selectBackendsOnFooting(const std::string& list, const std::vector<std::string>& assignments,
+                                                     const std::string& word, int substeps, bool both_allowed);
+
 /// [{name, version, description, settings{key: value}, deviations, footing{kind, substeps, settings}}]
 /// for metrics.json; with both footings each entry also has the run's `label` and `key`.
 Json backendsJson(const std::vector<SelectedBackend>& backends);
