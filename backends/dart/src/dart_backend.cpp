@@ -24,34 +24,10 @@ namespace {
 
 namespace dd = ::dart::dynamics;
 
-std::string where(const Scene& scene, const Body& body) {
-    return "dart: scene '" + scene.name + "': body '" + body.name + "': ";
-}
-
 // Everything the constructor relies on, checked before any DART object exists, so a refused
 // scene leaves nothing behind.
 const DartConfig& checked(const Scene& scene, const DartConfig& config) {
-    for (const Body& body : scene.bodies) {
-        if (body.material < 0 || static_cast<std::size_t>(body.material) >= scene.materials.size())
-            throw InputError(where(scene, body) + "material index " + std::to_string(body.material) + " out of range");
-        const std::string why = unsupportedReason(body.shape);
-        if (!why.empty()) throw InputError(where(scene, body) + body.shape.kindName() + " shape not supported: " + why);
-        if (!body.pose.position.allFinite() || !body.pose.orientation.coeffs().allFinite() ||
-            !(body.pose.orientation.norm() > 0.0))
-            throw InputError(where(scene, body) + "expected a finite pose with a non-zero quaternion");
-        if (body.isStatic()) continue;
-        if (body.isTracked() && !hasFiniteMotion(body))
-            throw InputError(where(scene, body) + "a tracked body needs finite initial velocities");
-        if (body.isTracked()) continue;  // infinite mass: no mass properties
-        if (!body.linear_velocity.allFinite() || !body.angular_velocity.allFinite())
-            throw InputError(where(scene, body) + "expected finite initial velocities");
-        const MassProperties& mp = body.mass_properties;
-        const Mat3 sym = 0.5 * (mp.inertia + mp.inertia.transpose());
-        if (!(mp.mass > 0.0) || !std::isfinite(mp.mass) || !mp.inertia.allFinite() || !mp.center_of_mass.allFinite() ||
-            sym.llt().info() != Eigen::Success)
-            throw InputError(where(scene, body) +
-                             "a virtual body needs a positive finite mass and a positive definite inertia");
-    }
+    checkBodiesForEngine(scene, "dart", unsupportedReason);
     return config;
 }
 

@@ -65,6 +65,7 @@ struct IslandScratch {
     std::vector<std::uint8_t> held_ground;
     std::vector<std::uint8_t> local_root;
     std::vector<int> ring_queue;
+    bool local_marked = false;   // the last markLocalSolves marked bodies (the per-body vectors need clearing)
 };
 
 }  // namespace vroc::native

@@ -342,9 +342,13 @@ bool NativeBackend::markLocalSolves(const std::vector<std::uint8_t>& due_root, s
     // steps of those whose tick came; the next ring enters as ground moving at its drift velocity,
     // and keeps its drift (docs/native-dynamics.md, "Local protection solves").
     IslandScratch& sc = island_scratch_;
-    sc.ring.assign(bodies_.size(), -1);
-    sc.held_ground.assign(bodies_.size(), 0);
-    sc.local_root.assign(bodies_.size(), 0);
+    // Cleared only after a step that marked something (the default, -1, never does: no per-step cost).
+    if (sc.ring.size() != bodies_.size() || sc.local_marked) {
+        sc.ring.assign(bodies_.size(), -1);
+        sc.held_ground.assign(bodies_.size(), 0);
+        sc.local_root.assign(bodies_.size(), 0);
+        sc.local_marked = false;
+    }
     const int reach = settings_.protection_ring;
     if (!off_grid || reach < 0) return false;
     const double tick = frame_dt_ / static_cast<double>(settings_.contact_substeps);
@@ -384,7 +388,8 @@ bool NativeBackend::markLocalSolves(const std::vector<std::uint8_t>& due_root, s
                 queue.push_back(other);
         }
     }
-    return !queue.empty();
+    sc.local_marked = !queue.empty();
+    return sc.local_marked;
 }
 
 void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,

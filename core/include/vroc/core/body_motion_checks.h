@@ -3,6 +3,9 @@
 // backend refuses the same bodies for the same reason.
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include "vroc/core/scene.h"
 
 namespace vroc {
@@ -15,5 +18,14 @@ inline bool hasFiniteMotion(const Body& body) {
            body.pose.orientation.norm() > 0.0 && body.linear_velocity.allFinite() &&
            body.angular_velocity.allFinite();
 }
+
+/// The checks a backend that builds its own copy of the scene makes on every body before it creates
+/// anything, so that a refused scene leaves nothing behind: a material index in range, a shape the
+/// engine supports (`unsupported` gives the reason, empty if supported), a finite pose with a
+/// non-zero quaternion, finite initial velocities for a body that moves, and a virtual body's
+/// positive finite mass and positive definite inertia. Throws InputError
+/// "<engine>: scene '<scene>': body '<body>': <what was expected>".
+void checkBodiesForEngine(const Scene& scene, const std::string& engine,
+                          const std::function<std::string(const Shape&)>& unsupported);
 
 }  // namespace vroc
