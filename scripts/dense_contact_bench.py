@@ -14,6 +14,10 @@ speed-accuracy ladder; every native configuration runs on one core, like the ref
     native-ring2   ... native.threads=1 native.protection_ring=2           (local protection solves, ring 2)
     native-spec    ... native.threads=1 native.touching=speculative        (issue 22's experimental regime)
     native-soft    ... native.threads=1 native.touching=soft               (the same with Box2D v3's soft step)
+    native-fixed   ... native.threads=1 native.touching=fixed              (fixed ticks: 1 a frame, up to 4 for fast pairs)
+    native-fixed1  ... native.threads=1 native.touching=fixed native.max_fixed_ticks=1    (exactly one a frame)
+    native-fixed2  ... native.threads=1 native.touching=fixed native.contact_substeps=2   (2 a frame, up to 4)
+    native-fixed-soft ... native.threads=1 native.touching=fixed-soft      (fixed ticks, soft step)
     bullet         vroc run ... --backend bullet --set bullet.substeps=1  (Bullet at its own default)
     bullet2        ... bullet.substeps=2
     bullet4        ... bullet.substeps=4                                   (the project's 4 sub-steps)
@@ -101,6 +105,15 @@ CONFIGS = {
     "native-spec": ("native", ["native.threads=1", "native.touching=speculative"],
                     "native (threads=1, touching=speculative)"),
     "native-soft": ("native", ["native.threads=1", "native.touching=soft"], "native (threads=1, touching=soft)"),
+    # Fixed ticks (docs/native-dynamics.md, "Fixed ticks"): Bullet's and Box2D's schedule, one tick or
+    # two per frame, with the block contact phase or the soft step.
+    "native-fixed": ("native", ["native.threads=1", "native.touching=fixed"], "native (threads=1, touching=fixed)"),
+    "native-fixed1": ("native", ["native.threads=1", "native.touching=fixed", "native.max_fixed_ticks=1"],
+                      "native (threads=1, touching=fixed, max_fixed_ticks=1)"),
+    "native-fixed2": ("native", ["native.threads=1", "native.touching=fixed", "native.contact_substeps=2"],
+                      "native (threads=1, touching=fixed, contact_substeps=2)"),
+    "native-fixed-soft": ("native", ["native.threads=1", "native.touching=fixed-soft"],
+                          "native (threads=1, touching=fixed-soft)"),
     "bullet": ("bullet", ["bullet.substeps=1"], "bullet (substeps=1)"),
     "bullet2": ("bullet", ["bullet.substeps=2"], "bullet (substeps=2)"),
     "bullet4": ("bullet", ["bullet.substeps=4"], "bullet (substeps=4)"),

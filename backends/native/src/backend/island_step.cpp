@@ -23,6 +23,7 @@ constexpr double kQuietApproach = 1e-6;
 }  // namespace
 
 double NativeBackend::gridTick(double t) const {
+    if (fixedTicks(settings_.touching)) return frame_end_ - t;   // the fixed tick (frame_end_ is its end)
     const double step = frame_dt_ / static_cast<double>(settings_.contact_substeps);
     const double end = frame_end_ + step * std::ceil((t + 0.5 * step - frame_end_) / step);
     // Within rounding of a grid point: exactly there (no sliver steps).
@@ -33,9 +34,10 @@ double NativeBackend::gridTick(double t) const {
 void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // Most steps only move pairs in flight along: no new contact and no island tick due.
     const bool new_contact = std::any_of(samples.begin(), samples.end(), [](const PairSample& s) { return !s.manifolds.empty(); });
-    if (!new_contact && nextTick() > t) {
+    const bool fixed = fixedTicks(settings_.touching);
+    if (!new_contact && (fixed || nextTick() > t)) {
         recordSamples(samples);
-        for (const PairSample& s : samples) scheduleSampled(s, t, false);
+        for (const PairSample& s : samples) fixed ? markSampled(s) : scheduleSampled(s, t, false);
         return;
     }
     const double cd = scene_.collision_distance;
@@ -76,7 +78,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // one sub-step to the next grid point.
     const double h = gridTick(t);
     const bool on_grid =
-        std::abs(h - frame_dt_ / static_cast<double>(settings_.contact_substeps)) <= 1e-6 * frame_dt_;
+        fixed || std::abs(h - frame_dt_ / static_cast<double>(settings_.contact_substeps)) <= 1e-6 * frame_dt_;
     const bool any_local = markLocalSolves(due_root, kTickCame, t, any_due && !on_grid);
     // A body the step's solve moves: in a due island, and not held as ground by a local solve.
     auto solvesBody = [&](int body) {
@@ -101,7 +103,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         std::sort(samples.begin(), samples.end(), [](const PairSample& x, const PairSample& y) { return x.pair < y.pair; });
     }
     recordSamples(samples);
-    deferImpacts(samples, t, frame_end_ - t);
+    if (!fixed) deferImpacts(samples, t, frame_end_ - t);   // fixed ticks have no event to defer to
 
     // Manifolds of the due islands, warm started from their pairs' caches.
     // The island's tick ends on the grid of sub-steps (frame_dt / contact_substeps, anchored at the
@@ -223,7 +225,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             is.resting.push_back(resting[static_cast<std::size_t>(m)]);
         }
         collisionPhase(is.local, is.solved, is.resting, resting_speed, h, is.collision);
-        is.report = settings_.touching == TouchingRegime::Soft
+        is.report = softContact(settings_.touching)
                         ? solveSoftStep(is.local, is.solved, h, scene_.gravity, soft, is.impulses)
                         : solveContactPhase(is.local, is.solved, h, scene_.gravity, settings, is.impulses);
     };
@@ -266,7 +268,9 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         }
         ++stats_.step_solves;
         stats_.solved_island_bodies += static_cast<std::int64_t>(is->bodies.size());
-        if ((due_root[static_cast<std::size_t>(is->root)] & kTickCame) == 0)
+        if (fixed)
+            ++stats_.solves_on_grid;
+        else if ((due_root[static_cast<std::size_t>(is->root)] & kTickCame) == 0)
             ++stats_.solves_new_contact;
         else if (on_grid)
             ++stats_.solves_on_grid;
@@ -330,7 +334,10 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         // keeps the bound of a pair no solve holds.
         const bool against_ground = sc.held_ground[static_cast<std::size_t>(ps.a)] != 0 ||
                                     sc.held_ground[static_cast<std::size_t>(ps.b)] != 0;
-        scheduleSampled(s, t, !s.manifolds.empty() && !against_ground);
+        if (fixed)
+            markSampled(s);
+        else
+            scheduleSampled(s, t, !s.manifolds.empty() && !against_ground);
     }
 }
 

@@ -103,6 +103,10 @@ std::vector<CollisionEvent> NativeBackend::takeEvents() {
 void NativeBackend::stepFrame(double dt) {
     if (!(dt > 0.0) || !std::isfinite(dt))
         throw InputError("native: stepFrame: frame dt must be a positive finite number [s], got " + std::to_string(dt));
+    if (fixedTicks(settings_.touching)) {
+        stepFixed(dt);
+        return;
+    }
     const double frame_start = time_;
     frame_end_ = frame_start + dt;
     frame_dt_ = dt;

@@ -98,6 +98,17 @@ private:
 
     // --- the step (native_backend.cpp) ---
     double internalStep(double t, double remaining, bool unbounded);
+    // --- fixed ticks (fixed_step.cpp; native.touching=fixed, fixed-soft) ---
+    /// The frame as native.contact_substeps fixed ticks: at each, every pair in the broad phase
+    /// is sampled and every island with a manifold solved over the tick; then every body advances.
+    void stepFixed(double dt);
+    /// Fixed ticks for the frame of `dt` [s] from time_: native.contact_substeps, or more (up to
+    /// native.max_fixed_ticks) where a pair may close farther within a tick than its patch reaches.
+    int fixedTicksFor(double dt);
+    /// One fixed tick from t to frame_end_ (set to the tick's end).
+    void fixedTick(double t);
+    /// The pair's touching state after a sample at a fixed tick (no queue key, no protection tick).
+    void markSampled(const PairSample& s);
     /// [s] the earliest queue key or island tick, not before t.
     double nextEventTime(double t);
 

@@ -49,16 +49,38 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "relative to each other since its last query is not queried again: its manifold is carried "
                  "along by the motion (separations from the points' anchors on both bodies). 0: every solve "
                  "queries and clips every touching pair (docs/native-narrowphase.md, \"Carried manifolds\")"});
+    s.push_back({"native.speculative_reach",
+                 T::Real,
+                 "-1",
+                 -1,
+                 4,
+                 {},
+                 "[fraction of the smaller body's inner radius] in the regimes with speculative points, the "
+                 "farthest beyond the collision distance a feature enters a pair's solve (what the pair may "
+                 "close within a tick, capped at this). -1: the regime's own, 0.25 for speculative and soft, "
+                 "1 for fixed and fixed-soft (docs/native-dynamics.md, \"Two regimes\", \"Fixed ticks\")"});
+    s.push_back({"native.max_fixed_ticks",
+                 T::Integer,
+                 "4",
+                 1,
+                 1024,
+                 {},
+                 "fixed ticks: a frame is split into more than native.contact_substeps ticks where a pair may "
+                 "close farther within a tick than its speculative reach holds (a fast body), up to this many "
+                 "(docs/native-dynamics.md, \"Fixed ticks\")"});
     s.push_back({"native.touching",
                  T::Choice,
                  "protected",
                  0,
                  0,
-                 {"protected", "speculative", "soft"},
+                 {"protected", "speculative", "soft", "fixed", "fixed-soft"},
                  "touching islands: solved again whenever a feature could close past the window (motion "
                  "bounds), or (experimental) held pairs solved on the sub-step grid only, with speculative "
                  "points for what may close within a tick; soft: that, with Box2D v3's sub-stepped soft "
-                 "contact solve in each tick (docs/native-dynamics.md, \"Two regimes\", \"The soft regime\")"});
+                 "contact solve in each tick; fixed: every pair sampled and every island solved at "
+                 "native.contact_substeps fixed ticks per frame, no events (Bullet's and Box2D's schedule); "
+                 "fixed-soft: that, with the soft contact solve (docs/native-dynamics.md, \"Two regimes\", "
+                 "\"The soft regime\", \"Fixed ticks\")"});
     s.push_back({"native.soft_substeps",
                  T::Integer,
                  "4",
@@ -131,10 +153,14 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.protection_ring"))
         n.protection_ring = static_cast<int>(settings.integer("native.protection_ring"));
     if (has("native.manifold_reuse")) n.manifold_reuse = settings.real("native.manifold_reuse");
+    if (has("native.max_fixed_ticks")) n.max_fixed_ticks = static_cast<int>(settings.integer("native.max_fixed_ticks"));
+    if (has("native.speculative_reach")) n.speculative_reach = settings.real("native.speculative_reach");
     if (has("native.touching"))
         n.touching = settings.text("native.touching") == "speculative" ? TouchingRegime::Speculative
-                     : settings.text("native.touching") == "soft"      ? TouchingRegime::Soft
-                                                                       : TouchingRegime::Protected;
+                     : settings.text("native.touching") == "soft"        ? TouchingRegime::Soft
+                     : settings.text("native.touching") == "fixed"       ? TouchingRegime::Fixed
+                     : settings.text("native.touching") == "fixed-soft"  ? TouchingRegime::FixedSoft
+                                                                         : TouchingRegime::Protected;
     if (has("native.soft_substeps")) n.soft_substeps = static_cast<int>(settings.integer("native.soft_substeps"));
     if (has("native.soft_hertz")) n.soft_hertz = settings.real("native.soft_hertz");
     if (has("native.soft_iterations")) n.soft_iterations = static_cast<int>(settings.integer("native.soft_iterations"));

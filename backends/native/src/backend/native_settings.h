@@ -20,10 +20,20 @@ enum class TouchingRegime {
     /// Fixed step with Box2D v3's soft step inside each tick (sub-steps, soft push-out, relax):
     /// held pairs are solved on the grid only, with no protection tick for what is in reach.
     Soft,
+    /// Fixed ticks (contact_substeps per frame), Box2D's and Bullet's schedule: at every tick every
+    /// pair within reach of what it may close in the tick is sampled and its island solved (the
+    /// block contact phase); no event, no protection tick. A body with no pair in reach flies exactly.
+    Fixed,
+    /// Fixed ticks with Box2D v3's soft step as each tick's contact phase.
+    FixedSoft,
 };
 
-/// Held islands are solved on the grid with speculative points (the speculative and soft regimes).
+/// Held islands are solved on the grid with speculative points (every regime but protected).
 inline bool onGrid(TouchingRegime r) { return r != TouchingRegime::Protected; }
+/// Every pair is sampled and every island solved at fixed ticks (no event schedule).
+inline bool fixedTicks(TouchingRegime r) { return r == TouchingRegime::Fixed || r == TouchingRegime::FixedSoft; }
+/// The contact phase is Box2D v3's soft step (dynamics/soft_step.h).
+inline bool softContact(TouchingRegime r) { return r == TouchingRegime::Soft || r == TouchingRegime::FixedSoft; }
 
 struct NativeSettings {
     ResponseModel response = ResponseModel::NewtonCoulomb;
@@ -44,6 +54,16 @@ struct NativeSettings {
     /// [-] fraction of the collision distance: a touching pair whose bodies moved less than this
     /// relative to each other since its last query keeps that manifold, carried along (0: query always)
     double manifold_reuse = 0.02;
+    /// [-] fraction of the smaller body's inner radius: the farthest beyond the collision distance a
+    /// feature enters a pair's solve in the regimes with speculative points; -1: the regime's own
+    /// (0.25 speculative and soft, 1 with fixed ticks: speculativeReach())
+    double speculative_reach = -1.0;
+    /// The cap native.speculative_reach stands for in this regime.
+    double speculativeReach() const {
+        return speculative_reach >= 0.0 ? speculative_reach : (fixedTicks(touching) ? 1.0 : 0.25);
+    }
+    /// Fixed ticks: most ticks a frame is split into where a fast pair needs more than contact_substeps
+    int max_fixed_ticks = 4;
     int soft_substeps = 4;                  ///< soft regime: sub-steps per island tick
     double soft_hertz = 60.0;               ///< [Hz] soft regime: stiffness of the push-out
     int soft_iterations = 4;                ///< soft regime: relaxations with the push-out per sub-step

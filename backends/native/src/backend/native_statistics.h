@@ -41,6 +41,8 @@ struct NativeStatistics {
     std::int64_t solves_local = 0;
     std::int64_t local_held_bodies = 0;
     std::int64_t solved_island_bodies = 0;  ///< bodies of the islands solved, summed over solves
+    /// [m] deepest penetration a pair's sample found (before a contact phase pushed it out)
+    double deepest_penetration = 0.0;
 
     /// Shared names (docs/backend-contract.md) as they are; the rest get the "native." prefix.
     Statistics report() const {
@@ -78,6 +80,7 @@ struct NativeStatistics {
         s["solves_new_contact"] = static_cast<double>(solves_new_contact);
         s["solved_bodies_per_solve"] =
             static_cast<double>(solved_island_bodies) / static_cast<double>(std::max<std::int64_t>(1, step_solves));
+        s["deepest_penetration_m"] = deepest_penetration;
         return vocabulary::prefixed(s, "native");
     }
 };

@@ -31,9 +31,12 @@ constexpr double kHeldMinTick = 1.0 / 64.0;
 
 // Speculative regime: the longest island tick, in sub-steps (a tick after an off-grid solve ends at
 // the first grid point at least half a sub-step away), and the farthest a speculative feature may
-// be, as a fraction of the smaller body's inner radius.
+// be, as a fraction of the smaller body's inner radius, is native.speculative_reach.
 constexpr double kLongestTick = 1.5;
-constexpr double kSpeculativeReach = 0.25;
+
+// Fixed ticks: a penetration deeper than this fraction of the smaller body's inner radius is repaired
+// by moving the bodies apart (penetration_recovered); a shallower one is left to the contact phase.
+constexpr double kFixedRepairDepth = 0.5;
 
 // How far ahead [s] a pair's earliest collision time is computed for the queue.
 constexpr double kQueueHorizon = 1.0;
@@ -145,7 +148,9 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
     // their islands' solve with speculative points: no event is scheduled for them; a pair with a
     // body in flight keeps the exact schedule (the queue) and becomes a manifold at touching.
     const double t = valid_at_[static_cast<std::size_t>(ps.a)];
-    const double window = reach > cd && heldAt(ps.a, t) && heldAt(ps.b, t) ? reach : cd;
+    // Fixed ticks: every pair within reach is in its island's solve (nothing else would meet it).
+    const double window =
+        reach > cd && (fixedTicks(settings_.touching) || (heldAt(ps.a, t) && heldAt(ps.b, t))) ? reach : cd;
     // A compound pair skips part pairs whose balls are farther apart than the pair can close within
     // a frame (a box in a drum of 30 slabs queries the two or three near it); their gap is a lower
     // bound (the balls' gap, or a ball against the other part's box).
@@ -190,7 +195,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
             // A touching part pair whose bodies barely moved relative to each other since its last
             // query keeps that manifold, carried along by the motion (manifold_anchor.h): a resting
             // pile's pairs are not walked and clipped again at every solve.
-            if (anchor.valid && anchor.window == window && settings_.manifold_reuse > 0.0) {
+            if (anchor.valid && anchor.window >= window && settings_.manifold_reuse > 0.0) {
                 ContactManifold m;
                 if (anchoredMotion(anchor, fa, fb, sa.parts[i].frame_radius, sb.parts[j].frame_radius) <=
                         settings_.manifold_reuse * cd &&
@@ -240,13 +245,16 @@ double NativeBackend::patchReach(const PairState& ps) const {
     // part of this contact, a wide tolerance would let in faces of a rounded hull, and the patch
     // (the reference and incident faces, contact_patch.h) holds only the features of one face: a
     // body turning farther brings down corners of another.
-    const double tick = kLongestTick * frame_dt_ / static_cast<double>(settings_.contact_substeps);
+    // Fixed ticks: the tick itself (frame_dt_ is the tick being stepped).
+    const double tick = fixedTicks(settings_.touching)
+                            ? frame_dt_
+                            : kLongestTick * frame_dt_ / static_cast<double>(settings_.contact_substeps);
     double size = kNever;
     if (!infinite_mass_[static_cast<std::size_t>(ps.a)])
         size = std::min(size, shapes_[static_cast<std::size_t>(ps.a)].inner_radius);
     if (!infinite_mass_[static_cast<std::size_t>(ps.b)])
         size = std::min(size, shapes_[static_cast<std::size_t>(ps.b)].inner_radius);
-    const double reach = std::min(closingSpeed(ps, tick) * tick, kSpeculativeReach * size);
+    const double reach = std::min(closingSpeed(ps, tick) * tick, settings_.speculativeReach() * size);
     return cd + (std::isfinite(reach) && reach > 0.0 ? reach : 0.0);
 }
 
@@ -265,6 +273,13 @@ void NativeBackend::setManifoldPoints(const ContactPatch& patch, const Proximity
     // the speculative points keep their own four, the deepest first (Bullet's and Box2D's rule), so
     // a tipping body's far vertices are never traded for one more point of the face it rests on.
     InlineVector<std::size_t, kMaxManifoldSlots> keep;
+    // The front: what touches, or (nothing touching yet) the points within the collision distance of
+    // the closest, which meet first (a box landing on an edge: both ends of the edge, not one end
+    // and a vertex of the face above it).
+    double closest = kNever;
+    for (std::size_t k = 0; k < patch.points.size(); ++k)
+        closest = std::min(closest, k < patch.gaps.size() ? patch.gaps[k] : r.distance);
+    const double front = std::max(cd, closest + cd);
     // Per-thread scratch (the narrow phase runs on several workers): no allocation once warm.
     thread_local std::vector<Vec3> pts;
     thread_local std::vector<double> gaps;
@@ -275,7 +290,7 @@ void NativeBackend::setManifoldPoints(const ContactPatch& patch, const Proximity
         index.clear();
         for (std::size_t k = 0; k < patch.points.size(); ++k) {
             const double gap = k < patch.gaps.size() ? patch.gaps[k] : r.distance;
-            if ((gap < cd) != (side == 0)) continue;
+            if ((gap < front) != (side == 0)) continue;
             pts.push_back(patch.points[k]);
             gaps.push_back(gap);
             index.push_back(k);
@@ -350,7 +365,20 @@ void NativeBackend::recordSamples(const std::vector<PairSample>& samples) {
         if (!std::isfinite(s.distance)) warn("nonfinite_distance");
         // The solver's position pass repairs penetration shallower than the collision distance;
         // deeper is an emergency (counted), repaired by moving the bodies.
-        if (s.distance < -scene_.collision_distance) separatePenetrating(s);
+        // Fixed ticks let a feature no patch held (a corner of another face turned down within the
+        // tick) sink deeper; the contact phase pushes it out, as Bullet's and Box2D's do, up to half
+        // the smaller body's inner radius (a quarter of its thickness).
+        double repair_below = -scene_.collision_distance;
+        if (fixedTicks(settings_.touching)) {
+            const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+            double size = kNever;
+            for (int body : {ps.a, ps.b})
+                if (!infinite_mass_[static_cast<std::size_t>(body)])
+                    size = std::min(size, shapes_[static_cast<std::size_t>(body)].inner_radius);
+            repair_below = -std::max(scene_.collision_distance, kFixedRepairDepth * size);
+        }
+        if (s.distance < 0.0) stats_.deepest_penetration = std::max(stats_.deepest_penetration, -s.distance);
+        if (s.distance < repair_below) separatePenetrating(s);
     }
 }
 

@@ -265,8 +265,14 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
             continue;
         // The gap between the two bodies' surfaces above x: B's lowest minus A's highest point there
         // (a vertex's own height where x is a vertex: the line through it may miss its body by rounding).
-        const double on_b = std::isnan(c.on_b) ? surfaceHeight(b, pose_b, x, mid, u, w, n, -1.0) : c.on_b;
-        const double on_a = std::isnan(c.on_a) ? surfaceHeight(a, pose_a, x, mid, u, w, n, 1.0) : c.on_a;
+        const double b_surface = surfaceHeight(b, pose_b, x, mid, u, w, n, -1.0);
+        const double a_surface = surfaceHeight(a, pose_a, x, mid, u, w, n, 1.0);
+        // A vertex above its own body's facing surface there (the far end of a steep face of a body
+        // nearly face down) is not where the bodies would meet: the surface below it is.
+        if (!std::isnan(c.on_b) && c.on_b > b_surface + tolerance) continue;
+        if (!std::isnan(c.on_a) && c.on_a < a_surface - tolerance) continue;
+        const double on_b = std::isnan(c.on_b) ? b_surface : c.on_b;
+        const double on_a = std::isnan(c.on_a) ? a_surface : c.on_a;
         const double gap = on_b - on_a;
         if (!std::isfinite(gap) || !(gap <= reach)) continue;
         kept.push_back(x);
@@ -278,10 +284,19 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
             ++touching;
         }
     }
-    // Only a patch that holds what touches now: otherwise the closest features are elsewhere.
+    // Nothing touches yet (a pair closing within reach): the patch is kept if it holds the closest
+    // features (a point as close as the pair, to the tolerance); otherwise they are elsewhere and
+    // the closest point joins it. Its centroid is then the closest point.
     if (touching == 0) {
-        patch.points.clear();
-        patch.gaps.clear();
+        if (patch.points.empty()) return;
+        const auto deepest = std::min_element(patch.gaps.begin(), patch.gaps.end());
+        if (*deepest > result.distance + tolerance) {
+            patch.points.push_back(mid);
+            patch.gaps.push_back(result.distance);
+            patch.centroid = mid;
+        } else {
+            patch.centroid = patch.points[static_cast<std::size_t>(deepest - patch.gaps.begin())];
+        }
         return;
     }
     patch.centroid = touching_sum / touching;
