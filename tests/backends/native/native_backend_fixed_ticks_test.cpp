@@ -15,16 +15,6 @@
 namespace vroc::native::test {
 namespace {
 
-// [m] how far the deepest corner of a box of half extents h lies below the floor's top (z = 0).
-double depthBelowFloor(const BodyState& st, const Vec3& h) {
-    double lowest = 1e9;
-    for (int c = 0; c < 8; ++c) {
-        const Vec3 corner((c & 1 ? 1 : -1) * h.x(), (c & 2 ? 1 : -1) * h.y(), (c & 4 ? 1 : -1) * h.z());
-        lowest = std::min(lowest, st.pose.apply(corner).z());
-    }
-    return -lowest;
-}
-
 NativeSettings fixedSettings(TouchingRegime regime, int threads = 1) {
     NativeSettings ns;
     ns.touching = regime;

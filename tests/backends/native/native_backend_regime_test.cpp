@@ -44,16 +44,6 @@ const char* regimeName(TouchingRegime r) {
     return r == TouchingRegime::Speculative ? "speculative" : r == TouchingRegime::Soft ? "soft" : "protected";
 }
 
-// [m] how far the deepest corner of box k lies below the floor's top (z = 0); <= 0 if none does.
-double depthBelowFloor(const BodyState& st, const Vec3& h) {
-    double lowest = 1e9;
-    for (int c = 0; c < 8; ++c) {
-        const Vec3 corner((c & 1 ? 1 : -1) * h.x(), (c & 2 ? 1 : -1) * h.y(), (c & 4 ? 1 : -1) * h.z());
-        lowest = std::min(lowest, st.pose.apply(corner).z());
-    }
-    return -lowest;
-}
-
 TEST(NativeRegimes, TumblingBoxesLandWithinTheCollisionDistanceAndRest) {
     const double cd = 1e-3;
     for (std::uint64_t seed : {1u, 2u, 3u}) {

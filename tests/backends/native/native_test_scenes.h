@@ -3,6 +3,7 @@
 // scene builders every suite shares.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -38,6 +39,17 @@ inline RigidBody randomBody(std::mt19937_64& rng, bool is_static = false) {
     b.linear_velocity = Vec3(u(rng), u(rng), u(rng)) * 4;
     b.angular_velocity = Vec3(u(rng), u(rng), u(rng)) * 3;
     return RigidBody::fromScene(b);
+}
+
+// [m] how far the deepest corner of a box of half extents h lies below the floor's top (z = 0);
+// <= 0 if none does (the box's corners from its pose: an independent ruler).
+inline double depthBelowFloor(const BodyState& st, const Vec3& h) {
+    double lowest = 1e9;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3 corner((c & 1 ? 1 : -1) * h.x(), (c & 2 ? 1 : -1) * h.y(), (c & 4 ? 1 : -1) * h.z());
+        lowest = std::min(lowest, st.pose.apply(corner).z());
+    }
+    return -lowest;
 }
 
 inline std::unique_ptr<NativeBackend> makeBackend(const Scene& s, NativeSettings settings = {}) {
