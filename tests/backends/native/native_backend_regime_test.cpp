@@ -41,7 +41,11 @@ Dropped tumblingBoxes(double cd, std::uint64_t seed) {
 }
 
 const char* regimeName(TouchingRegime r) {
-    return r == TouchingRegime::Speculative ? "speculative" : r == TouchingRegime::Soft ? "soft" : "protected";
+    return r == TouchingRegime::Speculative ? "speculative"
+           : r == TouchingRegime::Soft      ? "soft"
+           : r == TouchingRegime::Fixed     ? "fixed"
+           : r == TouchingRegime::FixedSoft ? "fixed-soft"
+                                            : "protected";
 }
 
 TEST(NativeRegimes, TumblingBoxesLandWithinTheCollisionDistanceAndRest) {
@@ -93,7 +97,8 @@ TEST(NativeRegimes, HeldBodiesNeedNoStepsBetweenTheirTicks) {
 // its neighbours (their x positions: an independent ruler), and no penetration is repaired.
 TEST(NativeRegimes, ImpactRunsDownARowWithoutPenetration) {
     const double cd = 1e-3, half = 0.25, pitch = 2 * half + 0.01;
-    for (TouchingRegime regime : {TouchingRegime::Speculative, TouchingRegime::Protected, TouchingRegime::Soft}) {
+    for (TouchingRegime regime : {TouchingRegime::Speculative, TouchingRegime::Protected, TouchingRegime::Soft,
+                                  TouchingRegime::Fixed, TouchingRegime::FixedSoft}) {
         Scene s = bareScene(cd);
         const int mat = addMaterial(s, 0.0, 0.0);
         addFloor(s, mat, 20.0);

@@ -12,6 +12,12 @@
 #include "scheduling/collision_time_bound.h"
 
 namespace vroc::native {
+namespace {
+
+// Passes per tick that sample again the pairs of bodies an impact set moving (fixedTick).
+constexpr int kImpactPasses = 8;
+
+}  // namespace
 
 int NativeBackend::fixedTicksFor(double dt) {
     const int base = std::max(1, settings_.contact_substeps);
@@ -83,11 +89,92 @@ void NativeBackend::fixedTick(double t) {
     }
     stats_.flight_pair_queries += static_cast<std::int64_t>(due.size());
     std::vector<PairSample>& samples = step_samples_;
+    island_scratch_.kicked.clear();
     samplePairs(due, t, samples);
     solveIslands(samples, t);
     recycleSamples(samples);
+    // A body an impact set moving (or stopped) may now reach a neighbour its pair was sampled too
+    // far from, or one the islands' solve held at its old velocity (a row of boxes struck end on).
+    // Its pairs are sampled again at the new velocities, and those that now reach get the collision
+    // phase at t (Newton restitution and friction at their approaching points); a body it changes
+    // faster than gravity does in the tick flies freely for the rest of the tick, and its own pairs
+    // are looked at in the next pass. A few passes carry a blow down a row; the contact phase takes
+    // the new pairs at the next tick.
+    for (int pass = 0; pass < kImpactPasses && !island_scratch_.kicked.empty(); ++pass) {
+        std::vector<int>& kicked = island_scratch_.kicked;
+        std::sort(kicked.begin(), kicked.end());
+        kicked.erase(std::unique(kicked.begin(), kicked.end()), kicked.end());
+        std::vector<int>& again = step_again_;
+        again.clear();
+        for (int body : kicked)
+            for (int p : body_pairs_[static_cast<std::size_t>(body)]) again.push_back(p);
+        kicked.clear();
+        std::sort(again.begin(), again.end());
+        again.erase(std::unique(again.begin(), again.end()), again.end());
+        if (again.empty()) break;
+        std::vector<PairSample>& resampled = step_resampled_;
+        samplePairs(again, t, resampled);
+        recordSamples(resampled);
+        ++stats_.fixed_impact_passes;
+        impactPass(resampled, t);
+        for (const PairSample& smp : resampled) markSampled(smp);
+        recycleSamples(resampled);
+    }
     changed_.clear();
     for (std::size_t i = 0; i < bodies_.size(); ++i) syncBody(static_cast<int>(i), frame_end_);
+}
+
+void NativeBackend::impactPass(std::vector<PairSample>& samples, double t) {
+    IslandScratch& sc = island_scratch_;
+    IslandSolve& is = sc.impact;
+    is.reset(-1);
+    for (const PairSample& smp : samples)
+        for (const ContactManifold& m : smp.manifolds) {
+            is.bodies.push_back(m.body_a);
+            is.bodies.push_back(m.body_b);
+        }
+    if (is.bodies.empty()) return;
+    std::sort(is.bodies.begin(), is.bodies.end());
+    is.bodies.erase(std::unique(is.bodies.begin(), is.bodies.end()), is.bodies.end());
+    auto localOf = [&](int id) {
+        return static_cast<int>(std::lower_bound(is.bodies.begin(), is.bodies.end(), id) - is.bodies.begin());
+    };
+    for (int id : is.bodies) is.local.push_back(bodies_[static_cast<std::size_t>(id)]);
+    for (const PairSample& smp : samples)
+        for (const ContactManifold& m : smp.manifolds) {
+            is.solved.push_back(m);
+            is.solved.back().body_a = localOf(m.body_a);
+            is.solved.back().body_b = localOf(m.body_b);
+            is.resting.push_back(0);   // new this tick: an impact, with its restitution
+        }
+    collisionPhase(is.local, is.solved, is.resting, scene_.gravity.norm() * (frame_end_ - t), frame_end_ - t,
+                   is.collision);
+    if (is.collision.ill_conditioned > 0) warn("ill_conditioned_solve", is.collision.ill_conditioned);
+    if (is.collision.degenerate > 0) warn("degenerate_contact", is.collision.degenerate);
+    if (is.collision.nonfinite > 0) warn("nonfinite_state", is.collision.nonfinite);
+    for (std::size_t k = 0; k < is.bodies.size(); ++k) {
+        if (is.collision.impulsed[k] == 0) continue;
+        const int body = is.bodies[k];
+        if (kickedFaster(bodies_[static_cast<std::size_t>(body)], is.local[k], body, frame_end_ - t))
+            sc.kicked.push_back(body);
+        const auto b = static_cast<std::size_t>(body);
+        bodies_[b] = is.local[k];
+        // A drift of constant force (the block contact phase's) takes the impulse on top: its
+        // velocity at t is the drift's start, so the tick's contact force still holds the body. A
+        // sub-stepped drift (the soft step's) ends at its own velocities: the body flies from t.
+        if (drift_until_[b] > t && !sub_stepped_[b].active)
+            bumpVersion(body);
+        else
+            endDrift(body);
+        if (asleep_[b] != 0) wake(body);
+    }
+}
+
+bool NativeBackend::kickedFaster(const RigidBody& before, const RigidBody& after, int body, double tick) const {
+    const double dv = (after.velocity - before.velocity).norm() +
+                      (after.angularVelocity() - before.angularVelocity()).norm() *
+                          shapes_[static_cast<std::size_t>(body)].outer_radius;
+    return dv > scene_.gravity.norm() * tick;
 }
 
 void NativeBackend::markSampled(const PairSample& s) {

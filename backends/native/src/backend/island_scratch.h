@@ -58,6 +58,8 @@ struct IslandScratch {
     std::vector<int> slot_of_root;  // per body: its island's pool slot this step, or -1
     std::vector<IslandSolve*> work, shared, spread;
     std::vector<int> touches;  // per body: manifolds this step (deferImpacts)
+    std::vector<int> kicked;   // fixed ticks: bodies a collision impulse changed this step (fixedTick)
+    IslandSolve impact;        // fixed ticks: the new manifolds of an impact pass (impactPass)
     // Local protection solves (native.protection_ring): per body, its ring (touching steps from a
     // body whose tick came; -1 outside), whether it is held as ground, whether its island is solved
     // locally (per root); the breadth-first queue.

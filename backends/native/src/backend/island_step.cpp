@@ -263,6 +263,10 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         for (std::size_t k = 0; k < is->bodies.size(); ++k) {
             if (is->collision.impulsed[k] == 0) continue;
             const int body = is->bodies[k];
+            // Fixed ticks: a body an impact changed faster than gravity does in the tick may now
+            // reach a neighbour its pair was sampled too far from (fixedTick's impact passes).
+            if (fixed && kickedFaster(bodies_[static_cast<std::size_t>(body)], is->local[k], body, h))
+                sc.kicked.push_back(body);
             bodies_[static_cast<std::size_t>(body)] = is->local[k];
             endDrift(body);   // the old drift was for the old velocity: it flies from now until the solve
         }

@@ -107,6 +107,13 @@ private:
     int fixedTicksFor(double dt);
     /// One fixed tick from t to frame_end_ (set to the tick's end).
     void fixedTick(double t);
+    /// Fixed ticks: the collision phase at time t of the manifolds in `samples` (pairs a body an
+    /// impact set moving now reaches); the bodies it changes fly freely from t and are recorded as
+    /// kicked (island_scratch_.kicked).
+    void impactPass(std::vector<PairSample>& samples, double t);
+    /// Fixed ticks: an impulse changed `body` from `before` to `after` by more than gravity does in
+    /// `tick` [s] (COM speed plus |Δω| × outer radius): an impact, not a resting contact's stop.
+    bool kickedFaster(const RigidBody& before, const RigidBody& after, int body, double tick) const;
     /// The pair's touching state after a sample at a fixed tick (no queue key, no protection tick).
     void markSampled(const PairSample& s);
     /// [s] the earliest queue key or island tick, not before t.

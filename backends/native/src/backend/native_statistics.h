@@ -41,6 +41,7 @@ struct NativeStatistics {
     std::int64_t solves_local = 0;
     std::int64_t local_held_bodies = 0;
     std::int64_t solved_island_bodies = 0;  ///< bodies of the islands solved, summed over solves
+    std::int64_t fixed_impact_passes = 0;   ///< fixed ticks: passes after an impact set bodies moving
     /// [m] deepest penetration a pair's sample found (before a contact phase pushed it out)
     double deepest_penetration = 0.0;
 
@@ -81,6 +82,7 @@ struct NativeStatistics {
         s["solved_bodies_per_solve"] =
             static_cast<double>(solved_island_bodies) / static_cast<double>(std::max<std::int64_t>(1, step_solves));
         s["deepest_penetration_m"] = deepest_penetration;
+        s["fixed_impact_passes"] = static_cast<double>(fixed_impact_passes);
         return vocabulary::prefixed(s, "native");
     }
 };
