@@ -244,16 +244,29 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
             if (cross2(poly[(i + 1) % poly.size()] - poly[i], x - poly[i]) < 0.0) return false;
         return true;
     };
+    // A vertex on its body's far side (every face around it turned away from the other body) is not
+    // where the bodies would meet: the surface below it is.
+    auto facing = [](const ConvexMesh& m, const Pose& pose, int v, const Vec3& towards) {
+        const int first = m.vertexEdge(v);
+        for (int h = first;;) {
+            if (pose.rotate(m.faceNormal(m.face(h))).dot(towards) >= -1e-9) return true;
+            if ((h = m.nextAroundOrigin(h)) == first) return false;
+        }
+    };
     for (int v = 0; v < b.vertexCount(); ++v) {
+        if (!facing(b, pose_b, v, -n)) continue;
         const Vec3 x = pose_b.apply(b.position(v));
         const double on_b = (x - mid).dot(n);
         if (on_b - pieceHeight(pa, to2(x), mid, u, w, n) <= reach && inside(a2, to2(x))) candidates.push_back({to2(x), on_b, nan});
     }
     for (int v = 0; v < a.vertexCount(); ++v) {
+        if (!facing(a, pose_a, v, n)) continue;
         const Vec3 y = pose_a.apply(a.position(v));
         const double on_a = (y - mid).dot(n);
         if (pieceHeight(pb, to2(y), mid, u, w, n) - on_a <= reach && inside(b2, to2(y))) candidates.push_back({to2(y), nan, on_a});
     }
+    const bool a_faces = pose_a.rotate(a.faceNormal(fa)).dot(n) > 1e-9;
+    const bool b_faces = pose_b.rotate(b.faceNormal(fb)).dot(n) < -1e-9;
     Vec3 touching_sum = Vec3::Zero();
     int touching = 0;
     const double merge2 = 1e-12 * (a2.empty() ? 1.0 : (a2[0].squaredNorm() + 1.0));
@@ -265,14 +278,15 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
             continue;
         // The gap between the two bodies' surfaces above x: B's lowest minus A's highest point there
         // (a vertex's own height where x is a vertex: the line through it may miss its body by rounding).
-        const double b_surface = surfaceHeight(b, pose_b, x, mid, u, w, n, -1.0);
-        const double a_surface = surfaceHeight(a, pose_a, x, mid, u, w, n, 1.0);
-        // A vertex above its own body's facing surface there (the far end of a steep face of a body
-        // nearly face down) is not where the bodies would meet: the surface below it is.
-        if (!std::isnan(c.on_b) && c.on_b > b_surface + tolerance) continue;
-        if (!std::isnan(c.on_a) && c.on_a < a_surface - tolerance) continue;
-        const double on_b = std::isnan(c.on_b) ? b_surface : c.on_b;
-        const double on_a = std::isnan(c.on_a) ? a_surface : c.on_a;
+        // Every candidate lies over both faces (the overlap) or over the other body's face (a
+        // vertex): where a face turns towards the other body, the body's surface there is the
+        // face's plane (convexity); otherwise the faces' half-spaces decide.
+        const double on_b = !std::isnan(c.on_b) ? c.on_b
+                            : b_faces        ? pieceHeight(pb, x, mid, u, w, n)
+                                             : surfaceHeight(b, pose_b, x, mid, u, w, n, -1.0);
+        const double on_a = !std::isnan(c.on_a) ? c.on_a
+                            : a_faces        ? pieceHeight(pa, x, mid, u, w, n)
+                                             : surfaceHeight(a, pose_a, x, mid, u, w, n, 1.0);
         const double gap = on_b - on_a;
         if (!std::isfinite(gap) || !(gap <= reach)) continue;
         kept.push_back(x);
