@@ -235,7 +235,8 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
         double on_b, on_a;
     };
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<Candidate> candidates;
+    thread_local std::vector<Candidate> candidates;   // per worker, reused: no allocation once warm
+    candidates.clear();
     Poly2& overlap = scratch().out;
     clipPolygon(b2, a2, overlap);
     for (const Eigen::Vector2d& x : overlap) candidates.push_back({x, nan, nan});

@@ -95,12 +95,14 @@ TEST(NativeStepAllocations, CountingOperatorNewSeesAnAllocation) {
 // buffers (contact patch, manifolds, pair samples, island solves, solver arrays, broad-phase
 // merges) keep their storage from step to step. History (settled pyramid10): 10,514 allocations
 // per internal step before, 0 after.
-void expectNoAllocationOnceSettled(const char* scene, int settle, int threads) {
+void expectNoAllocationOnceSettled(const char* scene, int settle, int threads,
+                                   TouchingRegime touching = TouchingRegime::Protected) {
     NativeSettings settings;
     settings.threads = threads;
+    settings.touching = touching;
     const StepAllocations a = countAfterSettling(scene, settle, 60, settings);
-    std::printf("settled %s, %d worker(s): %llu allocations over %.0f internal steps\n", scene, threads,
-                static_cast<unsigned long long>(a.allocations), a.internal_steps);
+    std::printf("settled %s, %d worker(s), touching %d: %llu allocations over %.0f internal steps\n", scene, threads,
+                static_cast<int>(touching), static_cast<unsigned long long>(a.allocations), a.internal_steps);
     ASSERT_GT(a.internal_steps, 0.0);
     EXPECT_EQ(a.allocations, 0u) << a.perStep() << " per internal step";
 }
@@ -115,6 +117,14 @@ TEST(NativeStepAllocations, SettledBinOfBoxesStepsAllocateNothing) {
     // and with two (the narrow phase and the islands then run on the pool's threads).
     expectNoAllocationOnceSettled("stress/bin_boxes100.json", 180, 1);
     expectNoAllocationOnceSettled("stress/bin_boxes100.json", 180, 2);
+}
+
+TEST(NativeStepAllocations, SettledScenesOnFixedTicksAllocateNothing) {
+    // The fixed-tick regime (native.touching=fixed) keeps the same buffers, and its impact passes
+    // their own (island_scratch_.impact, kicked): a settled pyramid and bin, one and two workers.
+    expectNoAllocationOnceSettled("stress/pyramid10.json", 60, 1, TouchingRegime::Fixed);
+    expectNoAllocationOnceSettled("stress/bin_boxes100.json", 180, 1, TouchingRegime::Fixed);
+    expectNoAllocationOnceSettled("stress/bin_boxes100.json", 180, 2, TouchingRegime::Fixed);
 }
 
 }  // namespace
