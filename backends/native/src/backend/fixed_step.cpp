@@ -31,16 +31,12 @@ int NativeBackend::fixedTicksFor(double dt) {
     // A tick may close a pair by at most the speculative reach's cap (what its patch can hold): a
     // fast body (a ball thrown into a pile) splits the frame into more ticks, up to the limit.
     const double cap_fraction = settings_.speculativeReach();
+    const double tick = dt / static_cast<double>(base);
     double ticks = base;
     for (int p : candidates_) {
-        const PairState& ps = pairs_[static_cast<std::size_t>(p)];
-        double size = kNever;
-        for (int body : {ps.a, ps.b})
-            if (!infinite_mass_[static_cast<std::size_t>(body)] && asleep_[static_cast<std::size_t>(body)] == 0)
-                size = std::min(size, shapes_[static_cast<std::size_t>(body)].inner_radius);
+        const double size = smallerInnerRadius(pairs_[static_cast<std::size_t>(p)], true);
         if (!(size < kNever) || !(cap_fraction * size > 0.0)) continue;
-        const double tick = dt / static_cast<double>(base);
-        ticks = std::max(ticks, std::ceil(closingSpeed(ps, tick) * dt / (cap_fraction * size)));
+        ticks = std::max(ticks, std::ceil(closingSpeed(pairs_[static_cast<std::size_t>(p)], tick) * dt / (cap_fraction * size)));
     }
     return static_cast<int>(std::min<double>(ticks, std::max(base, settings_.max_fixed_ticks)));
 }
@@ -57,9 +53,8 @@ void NativeBackend::stepFixed(double dt) {
         fixedTick(t);
         time_ = end;
     }
-    frame_end_ = start + dt;
+    frame_end_ = start + dt;   // == time_: the last tick ends there
     frame_dt_ = dt;
-    time_ = frame_end_;
     ++stats_.frames;
     stats_.internal_steps += ticks;
     stats_.max_internal_steps_per_frame = std::max<std::int64_t>(stats_.max_internal_steps_per_frame, ticks);
@@ -149,9 +144,7 @@ void NativeBackend::impactPass(std::vector<PairSample>& samples, double t) {
         }
     collisionPhase(is.local, is.solved, is.resting, scene_.gravity.norm() * (frame_end_ - t), frame_end_ - t,
                    is.collision);
-    if (is.collision.ill_conditioned > 0) warn("ill_conditioned_solve", is.collision.ill_conditioned);
-    if (is.collision.degenerate > 0) warn("degenerate_contact", is.collision.degenerate);
-    if (is.collision.nonfinite > 0) warn("nonfinite_state", is.collision.nonfinite);
+    warnCollision(is.collision);
     for (std::size_t k = 0; k < is.bodies.size(); ++k) {
         if (is.collision.impulsed[k] == 0) continue;
         const int body = is.bodies[k];

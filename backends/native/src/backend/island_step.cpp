@@ -257,9 +257,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // Results in island order: collision impulses change the bodies now, contact impulses become
     // drifts, manifolds go back to their caches.
     for (IslandSolve* is : work) {
-        if (is->collision.ill_conditioned > 0) warn("ill_conditioned_solve", is->collision.ill_conditioned);
-        if (is->collision.degenerate > 0) warn("degenerate_contact", is->collision.degenerate);
-        if (is->collision.nonfinite > 0) warn("nonfinite_state", is->collision.nonfinite);
+        warnCollision(is->collision);
         for (std::size_t k = 0; k < is->bodies.size(); ++k) {
             if (is->collision.impulsed[k] == 0) continue;
             const int body = is->bodies[k];
@@ -343,6 +341,12 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         else
             scheduleSampled(s, t, !s.manifolds.empty() && !against_ground);
     }
+}
+
+void NativeBackend::warnCollision(const CollisionPhaseReport& report) {
+    if (report.ill_conditioned > 0) warn("ill_conditioned_solve", report.ill_conditioned);
+    if (report.degenerate > 0) warn("degenerate_contact", report.degenerate);
+    if (report.nonfinite > 0) warn("nonfinite_state", report.nonfinite);
 }
 
 bool NativeBackend::markLocalSolves(const std::vector<std::uint8_t>& due_root, std::uint8_t tick_came, double t,

@@ -128,6 +128,9 @@ private:
     /// collision distance, plus in the speculative and soft regimes what the pair may close within
     /// the longest tick (capped).
     double patchReach(const PairState& ps) const;
+    /// [m] the smaller inner radius of the pair's bodies that move (`awake_only`: and are awake);
+    /// kNever if none does.
+    double smallerInnerRadius(const PairState& ps, bool awake_only = false) const;
     /// [m/s] bound on how fast any feature of the pair closes now: relative COM speed, each body's
     /// rotation at its outer radius, gravity over `tick` [s] against a body of infinite mass.
     double closingSpeed(const PairState& ps, double tick) const;
@@ -201,6 +204,8 @@ private:
     bool manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
                         double tick, CollisionPhaseReport& report) const;
     void emitEvents(const std::vector<PairSample>& samples, double t);
+    /// Counts a collision phase's troubles as warnings.
+    void warnCollision(const CollisionPhaseReport& report);
     /// Impacts are resolved at touching, not at the window gap: a free sphere meeting a static body
     /// inside the window gets its refined touching time (within `horizon` [s] of `t`) as its pair's
     /// contact_time, and its manifolds are cleared until then (scheduling/impact_deferral.cpp).

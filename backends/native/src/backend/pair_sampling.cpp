@@ -237,6 +237,15 @@ double NativeBackend::closingSpeed(const PairState& ps, double tick) const {
            (one_ground ? scene_.gravity.norm() * tick : 0.0);
 }
 
+double NativeBackend::smallerInnerRadius(const PairState& ps, bool awake_only) const {
+    double size = kNever;
+    for (int body : {ps.a, ps.b}) {
+        const auto b = static_cast<std::size_t>(body);
+        if (!infinite_mass_[b] && !(awake_only && asleep_[b] != 0)) size = std::min(size, shapes_[b].inner_radius);
+    }
+    return size;
+}
+
 double NativeBackend::patchReach(const PairState& ps) const {
     const double cd = scene_.collision_distance;
     if (!onGrid(settings_.touching)) return cd;
@@ -249,12 +258,7 @@ double NativeBackend::patchReach(const PairState& ps) const {
     const double tick = fixedTicks(settings_.touching)
                             ? frame_dt_
                             : kLongestTick * frame_dt_ / static_cast<double>(settings_.contact_substeps);
-    double size = kNever;
-    if (!infinite_mass_[static_cast<std::size_t>(ps.a)])
-        size = std::min(size, shapes_[static_cast<std::size_t>(ps.a)].inner_radius);
-    if (!infinite_mass_[static_cast<std::size_t>(ps.b)])
-        size = std::min(size, shapes_[static_cast<std::size_t>(ps.b)].inner_radius);
-    const double reach = std::min(closingSpeed(ps, tick) * tick, settings_.speculativeReach() * size);
+    const double reach = std::min(closingSpeed(ps, tick) * tick, settings_.speculativeReach() * smallerInnerRadius(ps));
     return cd + (std::isfinite(reach) && reach > 0.0 ? reach : 0.0);
 }
 
@@ -368,15 +372,11 @@ void NativeBackend::recordSamples(const std::vector<PairSample>& samples) {
         // Fixed ticks let a feature no patch held (a corner of another face turned down within the
         // tick) sink deeper; the contact phase pushes it out, as Bullet's and Box2D's do, up to half
         // the smaller body's inner radius (a quarter of its thickness).
-        double repair_below = -scene_.collision_distance;
-        if (fixedTicks(settings_.touching)) {
-            const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
-            double size = kNever;
-            for (int body : {ps.a, ps.b})
-                if (!infinite_mass_[static_cast<std::size_t>(body)])
-                    size = std::min(size, shapes_[static_cast<std::size_t>(body)].inner_radius);
-            repair_below = -std::max(scene_.collision_distance, kFixedRepairDepth * size);
-        }
+        const double repair_below =
+            fixedTicks(settings_.touching)
+                ? -std::max(scene_.collision_distance,
+                            kFixedRepairDepth * smallerInnerRadius(pairs_[static_cast<std::size_t>(s.pair)]))
+                : -scene_.collision_distance;
         if (s.distance < 0.0) stats_.deepest_penetration = std::max(stats_.deepest_penetration, -s.distance);
         if (s.distance < repair_below) separatePenetrating(s);
     }
