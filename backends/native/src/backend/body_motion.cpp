@@ -124,6 +124,27 @@ Aabb NativeBackend::sweptBox(int body) const {
     return box.inflated(scene_.collision_distance);
 }
 
+bool NativeBackend::impactingContact(int body, const BodyImpulse& imp, double h) const {
+    const auto i = static_cast<std::size_t>(body);
+    const RigidBody& rb = bodies_[i];
+    // The change over the tick: gravity's and the contact's. A supported body's cancel.
+    const Vec3 dv = scene_.gravity * h + rb.inv_mass * imp.linear;
+    const double dw = (rb.invInertiaWorld() * imp.angular).norm();
+    return dv.norm() + dw * shapes_[i].outer_radius > scene_.gravity.norm() * h;
+}
+
+void NativeBackend::applyContactImpact(int body, const BodyImpulse& imp) {
+    const auto i = static_cast<std::size_t>(body);
+    RigidBody& rb = bodies_[i];
+    const RigidBody saved = rb;
+    rb.com += imp.displacement;
+    rb.velocity += rb.inv_mass * imp.linear;
+    rb.angular_momentum += imp.angular;
+    rb.refreshEnergy();
+    endDrift(body);
+    recoverIfNonFinite(body, saved);
+}
+
 void NativeBackend::startDrift(int body, const BodyImpulse& imp, double t, double h) {
     const std::size_t i = static_cast<std::size_t>(body);
     RigidBody& rb = bodies_[i];

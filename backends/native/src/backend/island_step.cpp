@@ -307,7 +307,16 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             if (infinite_mass_[static_cast<std::size_t>(body)] || sc.held_ground[static_cast<std::size_t>(body)] != 0)
                 continue;   // held as ground: its drift from its own last solve goes on
             if (asleep_[static_cast<std::size_t>(body)] != 0) wake(body);   // touched: awake again
-            if (is->impulses[k].supported) {
+            if (is->impulses[k].supported && fixed && !is->impulses[k].sub_stepped &&
+                impactingContact(body, is->impulses[k], h)) {
+                // Fixed ticks: a blow the contact phase passed on (a row struck end on, a pile
+                // hit) is an impact at t, not a force over the tick: spread over the tick, the
+                // approach it stops would still close by half of it (|u| h / 2). Its pairs are
+                // sampled again in the impact passes; support (the contact cancelling gravity)
+                // stays a drift, which keeps resting stacks exact.
+                applyContactImpact(body, is->impulses[k]);
+                sc.kicked.push_back(body);
+            } else if (is->impulses[k].supported) {
                 startDrift(body, is->impulses[k], t, h);
             } else if (drift_until_[static_cast<std::size_t>(body)] > t) {
                 endDrift(body);   // the old contact force is gone

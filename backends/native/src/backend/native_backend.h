@@ -224,6 +224,12 @@ private:
     /// its drift ends); nullopt if the body's state is not at t.
     std::optional<RigidMotion> rigidMotion(int body, double t, double duration) const;
     Aabb sweptBox(int body) const;
+    /// Fixed ticks: the contact phase's impulses on `body` over a tick of `h` [s] change its motion
+    /// by more than gravity does in the tick (beyond holding it up: a blow passed on, not support).
+    bool impactingContact(int body, const BodyImpulse& imp, double h) const;
+    /// Applies the contact phase's impulses to `body` at once (with its position correction); it
+    /// then flies from its valid time, as after a collision-phase impulse.
+    void applyContactImpact(int body, const BodyImpulse& imp);
     /// Starts a drift of `h` [s] at time t with the contact phase's impulses.
     void startDrift(int body, const BodyImpulse& imp, double t, double h);
     /// True if `body` touches a tracked body that moves (such an island never sleeps).
