@@ -35,15 +35,16 @@ struct WorkBody {
 };
 
 struct PointConstraint {
+    // What a patch's block relaxation reads and writes, first: one cache line.
+    Vec3 ra_n, rb_n;        // ra x n, rb x n (the normal's moment arms, fixed for the step)
+    double target = 0.0;    // [m/s] lower bound on the final normal relative velocity
+    double lambda_n = 0.0;  // accumulated impulses (normal; tangential for a patch's friction)
     int a = -1, b = -1;
     int manifold = -1;
     Vec3 ra, rb;            // contact point - COM, world
     Vec3 n, t1, t2;         // normal A->B and tangent basis
-    Vec3 ra_n, rb_n;        // ra x n, rb x n (the normal's moment arms, fixed for the step)
-    double target = 0.0;    // [m/s] lower bound on the final normal relative velocity
     double start_speed = 0.0;   // [m/s] normal relative velocity at the step start
     double mu = 0.0;
-    double lambda_n = 0.0;  // accumulated impulses (normal; tangential for a patch's friction)
     Eigen::Vector2d lambda_t = Eigen::Vector2d::Zero();
     std::array<double, 4> kn_cache{};          // [1/kg] n.K.n per freeze state (see freezeKey)
     std::array<bool, 4> kn_cached{};
@@ -114,15 +115,52 @@ struct TangentMass {
     bool cached = false;
 };
 
-double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const std::vector<PointConstraint>& cs,
-                     int first, int count, bool freeze_a, bool freeze_b, TangentMass& tm) {
+// The rows of a patch's friction and spin constraints, prepared once per solve: the tangents'
+// moment arms and the velocity changes a unit impulse along them makes (I^-1 (r x t), I^-1 n), so a
+// relaxation is dot products and scaled additions, no 3 x 3 product.
+struct FrictionRows {
+    Vec3 ra_t1, ra_t2, rb_t1, rb_t2;   // r x t per body and tangent
+    Vec3 ia_t1, ia_t2, ib_t1, ib_t2;   // I^-1 (r x t)
+    Vec3 ia_n, ib_n;                   // I^-1 n (the spin about the normal)
+};
+
+FrictionRows frictionRows(const std::vector<WorkBody>& wb, const PointConstraint& f) {
+    const WorkBody& a = wb[f.a];
+    const WorkBody& b = wb[f.b];
+    FrictionRows r;
+    r.ra_t1 = f.ra.cross(f.t1);
+    r.ra_t2 = f.ra.cross(f.t2);
+    r.rb_t1 = f.rb.cross(f.t1);
+    r.rb_t2 = f.rb.cross(f.t2);
+    r.ia_t1 = a.inv_inertia * r.ra_t1;
+    r.ia_t2 = a.inv_inertia * r.ra_t2;
+    r.ib_t1 = b.inv_inertia * r.rb_t1;
+    r.ib_t2 = b.inv_inertia * r.rb_t2;
+    r.ia_n = a.inv_inertia * f.n;
+    r.ib_n = b.inv_inertia * f.n;
+    return r;
+}
+
+// `normal_sum` [N s]: the patch's accumulated normal impulse (the cone's radius is mu times it).
+double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const FrictionRows& rows, double normal_sum,
+                     bool freeze_a, bool freeze_b, TangentMass& tm) {
     if (f.mu <= 0.0) return 0.0;
-    double normal_sum = 0.0;
-    for (int i = first; i < first + count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
+    WorkBody& a = wb[f.a];
+    WorkBody& b = wb[f.b];
     if (!tm.cached) {
-        const Mat3 k = pointMatrix(wb[f.a], wb[f.b], f, freeze_a, freeze_b);
-        Eigen::Matrix2d kt;
-        kt << f.t1.dot(k * f.t1), f.t1.dot(k * f.t2), f.t2.dot(k * f.t1), f.t2.dot(k * f.t2);
+        // The tangential block of K (t1 and t2 are orthogonal unit vectors: no linear cross term).
+        Eigen::Matrix2d kt = Eigen::Matrix2d::Zero();
+        if (!freeze_a) {
+            kt(0, 0) += a.inv_mass + rows.ra_t1.dot(rows.ia_t1);
+            kt(1, 1) += a.inv_mass + rows.ra_t2.dot(rows.ia_t2);
+            kt(0, 1) += rows.ra_t1.dot(rows.ia_t2);
+        }
+        if (!freeze_b) {
+            kt(0, 0) += b.inv_mass + rows.rb_t1.dot(rows.ib_t1);
+            kt(1, 1) += b.inv_mass + rows.rb_t2.dot(rows.ib_t2);
+            kt(0, 1) += rows.rb_t1.dot(rows.ib_t2);
+        }
+        kt(1, 0) = kt(0, 1);
         tm.valid = kt.determinant() > 0.0;
         if (tm.valid) {
             tm.mass = kt;
@@ -131,14 +169,23 @@ double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const std::v
         tm.cached = true;
     }
     if (!tm.valid) return 0.0;
-    const Vec3 u = relativeVelocity(wb, f);
-    const Eigen::Vector2d ut(u.dot(f.t1), u.dot(f.t2));
+    const Vec3 dv = b.v - a.v;
+    const Eigen::Vector2d ut(f.t1.dot(dv) + b.w.dot(rows.rb_t1) - a.w.dot(rows.ra_t1),
+                             f.t2.dot(dv) + b.w.dot(rows.rb_t2) - a.w.dot(rows.ra_t2));
     Eigen::Vector2d cand = f.lambda_t - tm.inverse * ut;
     const double limit = f.mu * normal_sum;
-    const double len = cand.norm();
-    if (len > limit) cand *= (len > 0.0 ? limit / len : 0.0);
+    const double len2 = cand.squaredNorm();
+    if (len2 > limit * limit) cand *= limit / std::sqrt(len2);   // (len2 > 0: limit >= 0)
     const Eigen::Vector2d d = cand - f.lambda_t;
-    applyPair(wb, f, d(0) * f.t1 + d(1) * f.t2, freeze_a, freeze_b);
+    const Vec3 j = d(0) * f.t1 + d(1) * f.t2;
+    if (!freeze_a) {
+        a.v -= a.inv_mass * j;
+        a.w -= d(0) * rows.ia_t1 + d(1) * rows.ia_t2;
+    }
+    if (!freeze_b) {
+        b.v += b.inv_mass * j;
+        b.w += d(0) * rows.ib_t1 + d(1) * rows.ib_t2;
+    }
     f.lambda_t = cand;
     return (tm.mass * d).norm();
 }
@@ -206,6 +253,7 @@ void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodie
 // A patch: its normal points cs[first, first + count) and its friction constraint at the centroid.
 struct Patch {
     PointConstraint friction;
+    FrictionRows rows;             // the friction and spin rows at the centroid (frictionRows)
     int first = 0, count = 0;
     double torsion_radius = 0.0;   // [m] (2/3) mean distance of the polygon from its centroid
     double lambda_torsion = 0.0;   // [N m s] accumulated torsional impulse about the normal
@@ -222,28 +270,25 @@ struct Patch {
 
 // Torsional (spin) friction of a polygon patch: a uniform pressure over a disc of radius a gives
 // a maximal friction torque (2/3) a mu N. Without it a box stopped on a table keeps a tiny spin.
-double relaxTorsion(std::vector<WorkBody>& wb, const std::vector<PointConstraint>& cs, Patch& p,
-                    bool freeze_a, bool freeze_b) {
+double relaxTorsion(std::vector<WorkBody>& wb, double normal_sum, Patch& p, bool freeze_a, bool freeze_b) {
     const PointConstraint& f = p.friction;
     if (f.mu <= 0.0 || p.torsion_radius <= 0.0) return 0.0;
     WorkBody& a = wb[f.a];
     WorkBody& b = wb[f.b];
     const auto key = static_cast<std::size_t>(freezeKey(freeze_a, freeze_b));
     if (!p.torsion_cached[key]) {
-        p.torsion_k[key] = (freeze_a ? 0.0 : f.n.dot(a.inv_inertia * f.n)) + (freeze_b ? 0.0 : f.n.dot(b.inv_inertia * f.n));
+        p.torsion_k[key] = (freeze_a ? 0.0 : f.n.dot(p.rows.ia_n)) + (freeze_b ? 0.0 : f.n.dot(p.rows.ib_n));
         p.torsion_cached[key] = true;
     }
     const double k = p.torsion_k[key];
     if (!(k > 0.0)) return 0.0;
-    double normal_sum = 0.0;
-    for (int i = p.first; i < p.first + p.count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
     const double spin = (b.w - a.w).dot(f.n);
     const double limit = f.mu * normal_sum * p.torsion_radius;
     const double next = std::clamp(p.lambda_torsion - spin / k, -limit, limit);
     const double d = next - p.lambda_torsion;
     p.lambda_torsion = next;
-    if (!freeze_a) a.w -= a.inv_inertia * (d * f.n);
-    if (!freeze_b) b.w += b.inv_inertia * (d * f.n);
+    if (!freeze_a) a.w -= d * p.rows.ia_n;
+    if (!freeze_b) b.w += d * p.rows.ib_n;
     return std::abs(d) * k * p.torsion_radius;   // as a speed at the patch's rim
 }
 
@@ -284,10 +329,12 @@ bool patchBlockInverse(const std::vector<WorkBody>& wb, const std::vector<PointC
         spread += d * d.transpose();
     }
     if (!(spread.determinant() > 1e-8 * spread.trace() * spread.trace())) return false;
-    const Eigen::LLT<Mat3> g_llt(g);
-    if (g_llt.info() != Eigen::Success) return false;
+    // G is symmetric positive definite for a free body: its inverse in closed form (cofactors; a
+    // determinant that is not clearly positive sends the patch to the general path).
+    const double det = g.determinant();
+    if (!(det > 1e-12 * g.trace() * g.trace() * g.trace())) return false;
     const Eigen::Matrix<double, 4, 3> tp = t * (t.transpose() * t).inverse();
-    inv = tp * g_llt.solve(Mat3::Identity()) * tp.transpose();
+    inv = tp * g.inverse() * tp.transpose();
     return inv.allFinite();
 }
 
@@ -377,9 +424,11 @@ double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, P
         for (int i = p.first; i < p.first + p.count; ++i)
             change = std::max(change, relaxNormal(wb, cs[static_cast<std::size_t>(i)], freeze_a, freeze_b));
     }
-    change = std::max(change, relaxFriction(wb, p.friction, cs, p.first, p.count, freeze_a, freeze_b,
+    double normal_sum = 0.0;
+    for (int i = p.first; i < p.first + p.count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
+    change = std::max(change, relaxFriction(wb, p.friction, p.rows, normal_sum, freeze_a, freeze_b,
                                             p.tangent[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))]));
-    return std::max(change, relaxTorsion(wb, cs, p, freeze_a, freeze_b));
+    return std::max(change, relaxTorsion(wb, normal_sum, p, freeze_a, freeze_b));
 }
 
 int patchLevel(const std::vector<WorkBody>& wb, const Patch& p) {
@@ -736,6 +785,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         patch.first = static_cast<int>(cs.size());
         patch.count = static_cast<int>(pts.size());
         patch.friction = constraintAt(mf, static_cast<int>(m), mf.centroid, mf.distance);
+        patch.rows = frictionRows(wb, patch.friction);
         if (pts.size() > 2) {
             double mean = 0.0;
             for (const Vec3& p : pts) mean += (p - mf.centroid).norm();
