@@ -41,6 +41,7 @@ struct PointConstraint {
     double lambda_n = 0.0;  // accumulated impulses (normal; tangential for a patch's friction)
     int a = -1, b = -1;
     int manifold = -1;
+    Vec3 ia_n, ib_n;        // I^-1 (r x n) per body: the spin a unit normal impulse gives
     Vec3 ra, rb;            // contact point - COM, world
     Vec3 n, t1, t2;         // normal A->B and tangent basis
     double start_speed = 0.0;   // [m/s] normal relative velocity at the step start
@@ -88,18 +89,27 @@ Mat3 pointMatrix(const WorkBody& a, const WorkBody& b, const PointConstraint& c,
 // Each relaxation returns the change it made to its constraint's relative velocity [m/s]: the
 // sweeps stop once a whole sweep changes nothing by more than the tolerance.
 double relaxNormal(std::vector<WorkBody>& wb, PointConstraint& c, bool freeze_a, bool freeze_b) {
+    WorkBody& a = wb[c.a];
+    WorkBody& b = wb[c.b];
     const int key = freezeKey(freeze_a, freeze_b);
     if (!c.kn_cached[key]) {
-        const Mat3 k = pointMatrix(wb[c.a], wb[c.b], c, freeze_a, freeze_b);
-        c.kn_cache[key] = c.n.dot(k * c.n);
+        c.kn_cache[key] = (freeze_a ? 0.0 : a.inv_mass + c.ra_n.dot(c.ia_n)) + (freeze_b ? 0.0 : b.inv_mass + c.rb_n.dot(c.ib_n));
         c.kn_cached[key] = true;
     }
     const double kn = c.kn_cache[key];
     if (!(kn > 0.0)) return 0.0;
-    const double un = relativeVelocity(wb, c).dot(c.n);
+    const double un = c.n.dot(b.v - a.v) + b.w.dot(c.rb_n) - a.w.dot(c.ra_n);
     const double new_n = std::max(0.0, c.lambda_n + (c.target - un) / kn);
-    applyPair(wb, c, (new_n - c.lambda_n) * c.n, freeze_a, freeze_b);
-    const double change = std::abs(new_n - c.lambda_n) * kn;
+    const double d = new_n - c.lambda_n;
+    if (!freeze_a) {
+        a.v -= (a.inv_mass * d) * c.n;
+        a.w -= d * c.ia_n;
+    }
+    if (!freeze_b) {
+        b.v += (b.inv_mass * d) * c.n;
+        b.w += d * c.ib_n;
+    }
+    const double change = std::abs(d) * kn;
     c.lambda_n = new_n;
     return change;
 }
@@ -764,6 +774,8 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         c.mu = mf.friction;
         c.ra_n = c.ra.cross(c.n);
         c.rb_n = c.rb.cross(c.n);
+        c.ia_n = wb[c.a].inv_inertia * c.ra_n;
+        c.ib_n = wb[c.b].inv_inertia * c.rb_n;
         c.start_speed = relativeVelocity(wb, c).dot(c.n);
         c.target = -std::max(0.0, c.start_speed);
         // A speculative point may close by `allowed` over the step: the positions move with the mean

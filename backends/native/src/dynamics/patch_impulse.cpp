@@ -44,6 +44,26 @@ BlockVector solveOnFreeSet(const Block& m, const BlockVector& q, const std::arra
     return z;
 }
 
+// The minimum-norm solution of a free set's subsystem: a clearly definite block (its LDLT pivots
+// within 1e-10 of each other's scale: three points not on a line) has one solution, found by the
+// factorisation; a singular or nearly singular one (four coplanar points, three on a line) takes the
+// complete orthogonal decomposition, whose answer is the symmetric split.
+class MinimumNormSolve {
+public:
+    explicit MinimumNormSolve(const SubMatrix& m) : ldlt_(m) {
+        const auto d = ldlt_.vectorD().cwiseAbs();
+        definite_ = ldlt_.info() == Eigen::Success && ldlt_.isPositive() && d.size() > 0 &&
+                    d.minCoeff() > 1e-10 * d.maxCoeff();
+        if (!definite_) cod_.compute(m);
+    }
+    SubVector solve(const SubVector& rhs) const { return definite_ ? SubVector(ldlt_.solve(rhs)) : SubVector(cod_.solve(rhs)); }
+
+private:
+    Eigen::LDLT<SubMatrix> ldlt_;
+    Eigen::CompleteOrthogonalDecomposition<SubMatrix> cod_;
+    bool definite_ = false;
+};
+
 // The frictionless patch problem is the LCP w = M y + q >= 0, y >= 0, y.w = 0 with M symmetric
 // positive semi-definite: the optimality conditions of min 1/2 y'My + q'y over y >= 0. Solved
 // exactly by the active-set method of Lawson and Hanson's NNLS (1974, ch. 23) applied to that
@@ -99,7 +119,7 @@ BlockVector solveNormalLcp(const Block& m_in, const BlockVector& q, int count) {
     // for the flat box's symmetric split), kept if it stays non-negative.
     int k = 0;
     std::array<int, kMaxPoints> idx{};
-    const BlockVector exact = solveOnFreeSet<Eigen::CompleteOrthogonalDecomposition<SubMatrix>>(m_in, q, free, count, k, idx);
+    const BlockVector exact = solveOnFreeSet<MinimumNormSolve>(m_in, q, free, count, k, idx);
     if (k == 0 || !exact.allFinite()) return y;
     for (int r = 0; r < k; ++r)
         if (exact(idx[static_cast<std::size_t>(r)]) < 0.0) return y;
