@@ -145,6 +145,41 @@ TEST(NativeFixedTicks, TumblingBoxesLandAndRest) {
     }
 }
 
+// A pair apart is not queried while its distance bound (its last distance, less how far its bodies'
+// points moved since) stays beyond its reach (native.pair_bounds). The query it skips would have
+// found it out of reach: the results are those of querying every pair at every tick (the second
+// run, the independent answer), bit for bit, with fewer queries. A row of resting boxes 1 cm apart,
+// a box dropped among them and a ball rolled into them: pairs apart that stay apart, and pairs apart
+// that close and touch.
+TEST(NativeFixedTicks, PairBoundsSkipQueriesNotResults) {
+    const double cd = 1e-3, half = 0.1;
+    Scene s = bareScene(cd);
+    const int mat = addMaterial(s, 0.2, 0.5);
+    addFloor(s, mat, 20.0);
+    for (int i = 0; i < 6; ++i)
+        addBody(s, "box" + std::to_string(i), Shape::box(Vec3(half, half, half)),
+                at(Vec3((2 * half + 0.01) * i, 0, half + 0.5 * cd)), mat, false, 1.0);
+    addBody(s, "dropped", Shape::box(Vec3(half, half, half)), at(Vec3(0.21 * 2 + 0.105, 0, 1.0)), mat, false, 1.0);
+    const int ball = addBody(s, "ball", Shape::sphere(0.08), at(Vec3(-1.0, 0, 0.08 + 0.5 * cd)), mat, false, 2.0);
+    s.bodies[static_cast<std::size_t>(ball)].linear_velocity = Vec3(2.0, 0, 0);
+    std::vector<std::uint64_t> hashes;
+    std::vector<double> queries, bounded;
+    for (bool bounds : {true, false}) {
+        NativeSettings ns = fixedSettings(TouchingRegime::Fixed);
+        ns.pair_bounds = bounds;
+        auto be = makeBackend(s, ns);
+        for (int f = 0; f < 120; ++f) be->stepFrame(s.frame_dt);
+        hashes.push_back(stateHash(*be));
+        queries.push_back(be->statistics().at("native.narrow_queries"));
+        bounded.push_back(be->statistics().at("native.bounded_pairs"));
+        EXPECT_GT(be->statistics().at("collision_events"), 0.0) << "the ball and the dropped box meet the row";
+    }
+    EXPECT_EQ(hashes[0], hashes[1]);
+    EXPECT_GT(bounded[0], 0.0);
+    EXPECT_EQ(bounded[1], 0.0);
+    EXPECT_LT(queries[0], queries[1]);
+}
+
 // A 10 kg box at 15 m/s strikes the end of a row of twelve 1 kg boxes 1 cm apart (the row a ball
 // smashes in the base-12 pyramid, on a frictionless floor). Within the tick the blow must run the
 // whole row: each box it sets moving has its pairs sampled again at once (the impact passes), or a

@@ -77,11 +77,18 @@ void NativeBackend::fixedTick(double t) {
     auto pushes = [this](int body, int other) {   // a tracked body against a dynamic one
         return bodies_[static_cast<std::size_t>(body)].is_kinematic && !infinite_mass_[static_cast<std::size_t>(other)];
     };
+    lowerGapBounds();
     std::vector<int>& due = step_due_;
     due.clear();
     for (int p : candidates_) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
-        if (awake(ps.a) || awake(ps.b) || pushes(ps.a, ps.b) || pushes(ps.b, ps.a)) due.push_back(p);
+        if (!(awake(ps.a) || awake(ps.b) || pushes(ps.a, ps.b) || pushes(ps.b, ps.a))) continue;
+        // Its query would find it beyond its reach: no manifold, as if sampled (same results).
+        if (settings_.pair_bounds && boundedApart(ps)) {
+            ++stats_.bounded_pairs;
+            continue;
+        }
+        due.push_back(p);
     }
     stats_.flight_pair_queries += static_cast<std::int64_t>(due.size());
     std::vector<PairSample>& samples = step_samples_;
@@ -164,6 +171,37 @@ void NativeBackend::impactPass(std::vector<PairSample>& samples, double t) {
     }
 }
 
+void NativeBackend::lowerGapBounds() {
+    // How far any point of each body moved since the last tick began: its centre's displacement and,
+    // for the turn between the two orientations (angle theta), 2 sin(theta / 2) x its outer radius.
+    // The distance of two bodies falls by at most the sum of theirs.
+    const bool first = tick_start_pose_.size() != bodies_.size();
+    if (first) tick_start_pose_.resize(bodies_.size());
+    std::vector<double>& moved = step_moved_;
+    moved.assign(bodies_.size(), 0.0);
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        const Pose now{bodies_[i].com, bodies_[i].orientation};   // every surface point within R of the COM
+        if (!first) {
+            const Pose& was = tick_start_pose_[i];
+            const double cos_half = std::min(1.0, std::abs(was.orientation.dot(now.orientation)));
+            const double sin_half = std::sqrt(std::max(0.0, 1.0 - cos_half * cos_half));
+            moved[i] = (now.position - was.position).norm() + 2.0 * sin_half * shapes_[i].outer_radius;
+        }
+        tick_start_pose_[i] = now;
+    }
+    for (int p : candidates_) {
+        PairState& ps = pairs_[static_cast<std::size_t>(p)];
+        if (first || ps.gap_step != step_index_ - 1) continue;   // no bound from the last tick
+        ps.gap_bound -= moved[static_cast<std::size_t>(ps.a)] + moved[static_cast<std::size_t>(ps.b)];
+        ps.gap_step = step_index_;
+    }
+}
+
+bool NativeBackend::boundedApart(const PairState& ps) const {
+    if (ps.touching || ps.gap_step != step_index_) return false;
+    return ps.gap_bound >= std::max(scene_.collision_distance, patchReach(ps));
+}
+
 bool NativeBackend::kickedFaster(const RigidBody& before, const RigidBody& after, int body, double tick) const {
     const double dv = (after.velocity - before.velocity).norm() +
                       (after.angularVelocity() - before.angularVelocity()).norm() *
@@ -177,6 +215,8 @@ void NativeBackend::markSampled(const PairSample& s) {
     ps.touching = touching;
     ps.in_contact = touching && s.distance < scene_.collision_distance;
     ps.sampled_once = true;
+    ps.gap_bound = s.distance;   // queried at this tick's start (fixed ticks sample at t)
+    ps.gap_step = step_index_;
     if (touching ? touching_.insert(s.pair).second : touching_.erase(s.pair) > 0) ticks_dirty_ = true;
 }
 

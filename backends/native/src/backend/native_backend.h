@@ -75,6 +75,10 @@ private:
         bool in_broad_phase = false;
         std::int64_t sampled_step = -1;                // internal step of the last sample
         bool placed_in_window = false;   // within the collision distance since t = 0: resting (deferImpacts)
+        // Fixed ticks (native.pair_bounds): a lower bound on the pair's distance at the start of
+        // internal step `gap_step` (its last queried distance, less its bodies' motion since).
+        double gap_bound = 0.0;
+        std::int64_t gap_step = -1;
         // The storage of the pair's last sample, handed back after the step (recycleSamples) and
         // reused by its next one: sampling allocates nothing once every pair has been sampled.
         std::vector<ContactManifold> spare_manifolds;
@@ -102,6 +106,11 @@ private:
     /// The frame as native.contact_substeps fixed ticks: at each, every pair in the broad phase
     /// is sampled and every island with a manifold solved over the tick; then every body advances.
     void stepFixed(double dt);
+    /// Fixed ticks: lowers every broad-phase pair's distance bound by how far its bodies' points
+    /// moved since the last tick began (pose differences: a state set between frames counts too).
+    void lowerGapBounds();
+    /// Fixed ticks: the pair is apart by more than it can reach within this tick (by its bound).
+    bool boundedApart(const PairState& ps) const;
     /// Fixed ticks for the frame of `dt` [s] from time_: native.contact_substeps, or more (up to
     /// native.max_fixed_ticks) where a pair may close farther within a tick than its patch reaches.
     int fixedTicksFor(double dt);
@@ -304,6 +313,8 @@ private:
     std::unique_ptr<PairPartition> partition_;
     double time_ = 0.0;
     std::int64_t step_index_ = 0;
+    std::vector<Pose> tick_start_pose_;     // fixed ticks: per body, COM and orientation when the last tick began
+    std::vector<double> step_moved_;        // fixed ticks: per body, how far its points moved since then
     std::vector<CollisionEvent> events_;
     WarningCounts warnings_;
     NativeStatistics stats_;

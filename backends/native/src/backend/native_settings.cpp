@@ -49,6 +49,10 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "relative to each other since its last query is not queried again: its manifold is carried "
                  "along by the motion (separations from the points' anchors on both bodies). 0: every solve "
                  "queries and clips every touching pair (docs/native-narrowphase.md, \"Carried manifolds\")"});
+    s.push_back({"native.pair_bounds", T::Boolean, "true", 0, 0, {},
+                 "fixed ticks: a pair apart is not queried while a lower bound on its distance (its last "
+                 "one, minus how far its bodies' points have moved since) stays beyond its reach; false: every "
+                 "broad-phase pair queried at every tick (the same results; for checking and measurement)"});
     s.push_back({"native.speculative_reach",
                  T::Real,
                  "-1",
@@ -153,6 +157,7 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.protection_ring"))
         n.protection_ring = static_cast<int>(settings.integer("native.protection_ring"));
     if (has("native.manifold_reuse")) n.manifold_reuse = settings.real("native.manifold_reuse");
+    if (has("native.pair_bounds")) n.pair_bounds = settings.boolean("native.pair_bounds");
     if (has("native.max_fixed_ticks")) n.max_fixed_ticks = static_cast<int>(settings.integer("native.max_fixed_ticks"));
     if (has("native.speculative_reach")) n.speculative_reach = settings.real("native.speculative_reach");
     if (has("native.touching"))

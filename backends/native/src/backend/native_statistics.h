@@ -42,6 +42,7 @@ struct NativeStatistics {
     std::int64_t local_held_bodies = 0;
     std::int64_t solved_island_bodies = 0;  ///< bodies of the islands solved, summed over solves
     std::int64_t fixed_impact_passes = 0;   ///< fixed ticks: passes after an impact set bodies moving
+    std::int64_t bounded_pairs = 0;   ///< fixed ticks: pair queries skipped, bounded beyond reach (pair_bounds)
     /// [m] deepest penetration a pair's sample found (before a contact phase pushed it out)
     double deepest_penetration = 0.0;
 
@@ -83,6 +84,7 @@ struct NativeStatistics {
             static_cast<double>(solved_island_bodies) / static_cast<double>(std::max<std::int64_t>(1, step_solves));
         s["deepest_penetration_m"] = deepest_penetration;
         s["fixed_impact_passes"] = static_cast<double>(fixed_impact_passes);
+        s["bounded_pairs"] = static_cast<double>(bounded_pairs);
         return vocabulary::prefixed(s, "native");
     }
 };
