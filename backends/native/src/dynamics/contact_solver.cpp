@@ -9,6 +9,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include "dynamics/constraint_row.h"
 #include "dynamics/pseudo_inverse.h"
 #include "scheduling/spin_barrier.h"
 
@@ -125,33 +126,23 @@ struct TangentMass {
     bool cached = false;
 };
 
-// The rows of a patch's friction and spin constraints, prepared once per solve: the tangents'
-// moment arms and the velocity changes a unit impulse along them makes (I^-1 (r x t), I^-1 n), so a
-// relaxation is dot products and scaled additions, no 3 x 3 product.
+// The rows of a patch's friction and spin constraints, prepared once per solve (constraint_row.h).
 struct FrictionRows {
-    Vec3 ra_t1, ra_t2, rb_t1, rb_t2;   // r x t per body and tangent
-    Vec3 ia_t1, ia_t2, ib_t1, ib_t2;   // I^-1 (r x t)
-    Vec3 ia_n, ib_n;                   // I^-1 n (the spin about the normal)
+    ConstraintRow t1, t2;   // along the two tangents
+    Vec3 ia_n, ib_n;        // I^-1 n (the spin about the normal)
 };
 
 FrictionRows frictionRows(const std::vector<WorkBody>& wb, const PointConstraint& f) {
     const WorkBody& a = wb[f.a];
     const WorkBody& b = wb[f.b];
     FrictionRows r;
-    r.ra_t1 = f.ra.cross(f.t1);
-    r.ra_t2 = f.ra.cross(f.t2);
-    r.rb_t1 = f.rb.cross(f.t1);
-    r.rb_t2 = f.rb.cross(f.t2);
-    r.ia_t1 = a.inv_inertia * r.ra_t1;
-    r.ia_t2 = a.inv_inertia * r.ra_t2;
-    r.ib_t1 = b.inv_inertia * r.rb_t1;
-    r.ib_t2 = b.inv_inertia * r.rb_t2;
+    r.t1 = ConstraintRow::along(f.ra, f.rb, f.t1, a.inv_inertia, b.inv_inertia);
+    r.t2 = ConstraintRow::along(f.ra, f.rb, f.t2, a.inv_inertia, b.inv_inertia);
     r.ia_n = a.inv_inertia * f.n;
     r.ib_n = b.inv_inertia * f.n;
     return r;
 }
 
-// `normal_sum` [N s]: the patch's accumulated normal impulse (the cone's radius is mu times it).
 double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const FrictionRows& rows, double normal_sum,
                      bool freeze_a, bool freeze_b, TangentMass& tm) {
     if (f.mu <= 0.0) return 0.0;
@@ -161,14 +152,14 @@ double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const Fricti
         // The tangential block of K (t1 and t2 are orthogonal unit vectors: no linear cross term).
         Eigen::Matrix2d kt = Eigen::Matrix2d::Zero();
         if (!freeze_a) {
-            kt(0, 0) += a.inv_mass + rows.ra_t1.dot(rows.ia_t1);
-            kt(1, 1) += a.inv_mass + rows.ra_t2.dot(rows.ia_t2);
-            kt(0, 1) += rows.ra_t1.dot(rows.ia_t2);
+            kt(0, 0) += a.inv_mass + rows.t1.ra.dot(rows.t1.ia);
+            kt(1, 1) += a.inv_mass + rows.t2.ra.dot(rows.t2.ia);
+            kt(0, 1) += rows.t1.ra.dot(rows.t2.ia);
         }
         if (!freeze_b) {
-            kt(0, 0) += b.inv_mass + rows.rb_t1.dot(rows.ib_t1);
-            kt(1, 1) += b.inv_mass + rows.rb_t2.dot(rows.ib_t2);
-            kt(0, 1) += rows.rb_t1.dot(rows.ib_t2);
+            kt(0, 0) += b.inv_mass + rows.t1.rb.dot(rows.t1.ib);
+            kt(1, 1) += b.inv_mass + rows.t2.rb.dot(rows.t2.ib);
+            kt(0, 1) += rows.t1.rb.dot(rows.t2.ib);
         }
         kt(1, 0) = kt(0, 1);
         tm.valid = kt.determinant() > 0.0;
@@ -180,8 +171,8 @@ double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const Fricti
     }
     if (!tm.valid) return 0.0;
     const Vec3 dv = b.v - a.v;
-    const Eigen::Vector2d ut(f.t1.dot(dv) + b.w.dot(rows.rb_t1) - a.w.dot(rows.ra_t1),
-                             f.t2.dot(dv) + b.w.dot(rows.rb_t2) - a.w.dot(rows.ra_t2));
+    const Eigen::Vector2d ut(f.t1.dot(dv) + b.w.dot(rows.t1.rb) - a.w.dot(rows.t1.ra),
+                             f.t2.dot(dv) + b.w.dot(rows.t2.rb) - a.w.dot(rows.t2.ra));
     Eigen::Vector2d cand = f.lambda_t - tm.inverse * ut;
     const double limit = f.mu * normal_sum;
     const double len2 = cand.squaredNorm();
@@ -190,11 +181,11 @@ double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const Fricti
     const Vec3 j = d(0) * f.t1 + d(1) * f.t2;
     if (!freeze_a) {
         a.v -= a.inv_mass * j;
-        a.w -= d(0) * rows.ia_t1 + d(1) * rows.ia_t2;
+        a.w -= d(0) * rows.t1.ia + d(1) * rows.t2.ia;
     }
     if (!freeze_b) {
         b.v += b.inv_mass * j;
-        b.w += d(0) * rows.ib_t1 + d(1) * rows.ib_t2;
+        b.w += d(0) * rows.t1.ib + d(1) * rows.t2.ib;
     }
     f.lambda_t = cand;
     return (tm.mass * d).norm();
@@ -772,10 +763,11 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         c.t1 = c.n.unitOrthogonal();
         c.t2 = c.n.cross(c.t1);
         c.mu = mf.friction;
-        c.ra_n = c.ra.cross(c.n);
-        c.rb_n = c.rb.cross(c.n);
-        c.ia_n = wb[c.a].inv_inertia * c.ra_n;
-        c.ib_n = wb[c.b].inv_inertia * c.rb_n;
+        const ConstraintRow row = ConstraintRow::along(c.ra, c.rb, c.n, wb[c.a].inv_inertia, wb[c.b].inv_inertia);
+        c.ra_n = row.ra;
+        c.rb_n = row.rb;
+        c.ia_n = row.ia;
+        c.ib_n = row.ib;
         c.start_speed = relativeVelocity(wb, c).dot(c.n);
         c.target = -std::max(0.0, c.start_speed);
         // A speculative point may close by `allowed` over the step: the positions move with the mean

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <tuple>
 
+#include "dynamics/constraint_row.h"
 #include "vroc/core/rotation_vector.h"
 
 namespace vroc::native {
@@ -34,8 +35,7 @@ struct SoftPoint {
     int level = 0;  ///< stack order (see solveSoftStep)
     Vec3 ra, rb;    ///< [m] anchors from the COMs at the tick's start, world
     Vec3 n, t1, t2;
-    Vec3 ia_n, ib_n, ia_t1, ib_t1, ia_t2, ib_t2;  ///< I^-1 (r x dir) per body and direction
-    Vec3 ra_n, rb_n, ra_t1, rb_t1, ra_t2, rb_t2;  ///< r x dir
+    ConstraintRow row_n, row_t1, row_t2;          ///< r x dir and I^-1 (r x dir) per direction
     double separation = 0.0;                      ///< [m] at the tick's start, minus the target
     double normal_mass = 0.0, t1_mass = 0.0, t2_mass = 0.0;
     double mu = 0.0;
@@ -93,7 +93,7 @@ void relaxPoint(std::vector<SoftBody>& bodies, SoftPoint& p, double push_rate, d
     const double next = std::max(p.normal + impulse, 0.0);
     impulse = next - p.normal;
     p.normal = next;
-    applyAlong(a, b, p.n, p.ia_n, p.ib_n, impulse);
+    applyAlong(a, b, p.n, p.row_n.ia, p.row_n.ib, impulse);
 
     // Coulomb friction: the two tangent rows, then the disc of radius mu x normal impulse.
     const Vec3 vr = relativeVelocity(a, b, p);
@@ -106,8 +106,8 @@ void relaxPoint(std::vector<SoftBody>& bodies, SoftPoint& p, double push_rate, d
         f1 *= scale;
         f2 *= scale;
     }
-    applyAlong(a, b, p.t1, p.ia_t1, p.ib_t1, f1 - p.tangent1);
-    applyAlong(a, b, p.t2, p.ia_t2, p.ib_t2, f2 - p.tangent2);
+    applyAlong(a, b, p.t1, p.row_t1.ia, p.row_t1.ib, f1 - p.tangent1);
+    applyAlong(a, b, p.t2, p.row_t2.ia, p.row_t2.ib, f2 - p.tangent2);
     p.tangent1 = f1;
     p.tangent2 = f2;
 }
@@ -115,9 +115,9 @@ void relaxPoint(std::vector<SoftBody>& bodies, SoftPoint& p, double push_rate, d
 void warmStart(std::vector<SoftBody>& bodies, const SoftPoint& p) {
     SoftBody& a = bodies[static_cast<std::size_t>(p.a)];
     SoftBody& b = bodies[static_cast<std::size_t>(p.b)];
-    applyAlong(a, b, p.n, p.ia_n, p.ib_n, p.normal);
-    applyAlong(a, b, p.t1, p.ia_t1, p.ib_t1, p.tangent1);
-    applyAlong(a, b, p.t2, p.ia_t2, p.ib_t2, p.tangent2);
+    applyAlong(a, b, p.n, p.row_n.ia, p.row_n.ib, p.normal);
+    applyAlong(a, b, p.t1, p.row_t1.ia, p.row_t1.ib, p.tangent1);
+    applyAlong(a, b, p.t2, p.row_t2.ia, p.row_t2.ib, p.tangent2);
 }
 
 }  // namespace
@@ -171,21 +171,12 @@ ContactSolverReport solveSoftStep(const std::vector<RigidBody>& bodies, std::vec
             p.n = nrm;
             p.t1 = t1;
             p.t2 = t2;
-            p.ra_n = p.ra.cross(nrm);
-            p.rb_n = p.rb.cross(nrm);
-            p.ra_t1 = p.ra.cross(t1);
-            p.rb_t1 = p.rb.cross(t1);
-            p.ra_t2 = p.ra.cross(t2);
-            p.rb_t2 = p.rb.cross(t2);
-            p.ia_n = a.inv_inertia * p.ra_n;
-            p.ib_n = b.inv_inertia * p.rb_n;
-            p.ia_t1 = a.inv_inertia * p.ra_t1;
-            p.ib_t1 = b.inv_inertia * p.rb_t1;
-            p.ia_t2 = a.inv_inertia * p.ra_t2;
-            p.ib_t2 = b.inv_inertia * p.rb_t2;
-            p.normal_mass = effectiveMass(a, b, p.ra_n, p.rb_n, p.ia_n, p.ib_n);
-            p.t1_mass = effectiveMass(a, b, p.ra_t1, p.rb_t1, p.ia_t1, p.ib_t1);
-            p.t2_mass = effectiveMass(a, b, p.ra_t2, p.rb_t2, p.ia_t2, p.ib_t2);
+            p.row_n = ConstraintRow::along(p.ra, p.rb, nrm, a.inv_inertia, b.inv_inertia);
+            p.row_t1 = ConstraintRow::along(p.ra, p.rb, t1, a.inv_inertia, b.inv_inertia);
+            p.row_t2 = ConstraintRow::along(p.ra, p.rb, t2, a.inv_inertia, b.inv_inertia);
+            p.normal_mass = effectiveMass(a, b, p.row_n.ra, p.row_n.rb, p.row_n.ia, p.row_n.ib);
+            p.t1_mass = effectiveMass(a, b, p.row_t1.ra, p.row_t1.rb, p.row_t1.ia, p.row_t1.ib);
+            p.t2_mass = effectiveMass(a, b, p.row_t2.ra, p.row_t2.rb, p.row_t2.ia, p.row_t2.ib);
             const double gap = i < m.point_gap.size() ? m.point_gap[i] : m.distance;
             if (gap < settings.correction_floor) corrected = true;
             // A point inside the window is held where it is (it may not close further, and below
