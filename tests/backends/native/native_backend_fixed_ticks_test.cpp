@@ -206,11 +206,7 @@ TEST(NativeFixedTicks, BlowRunsDownATwelveBoxRow) {
         double overlap = 0.0;
         for (int f = 0; f < 20; ++f) {
             be->stepFrame(s.frame_dt);
-            for (std::size_t k = 1; k < row.size(); ++k) {
-                const double gap =
-                    be->bodyState(row[k]).pose.position.x() - be->bodyState(row[k - 1]).pose.position.x() - 2 * half;
-                overlap = std::max(overlap, -gap);
-            }
+            overlap = std::max(overlap, rowOverlap(*be, row, half));
         }
         EXPECT_LE(overlap, 5 * cd) << name(regime);
         EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u) << name(regime);

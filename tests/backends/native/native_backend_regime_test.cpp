@@ -113,11 +113,7 @@ TEST(NativeRegimes, ImpactRunsDownARowWithoutPenetration) {
         double overlap = 0.0;
         for (int f = 0; f < 30; ++f) {
             be->stepFrame(s.frame_dt);
-            for (std::size_t k = 1; k < row.size(); ++k) {
-                const double gap =
-                    be->bodyState(row[k]).pose.position.x() - be->bodyState(row[k - 1]).pose.position.x() - 2 * half;
-                overlap = std::max(overlap, -gap);
-            }
+            overlap = std::max(overlap, rowOverlap(*be, row, half));
         }
         const char* name = regimeName(regime);
         EXPECT_LE(overlap, cd) << name;

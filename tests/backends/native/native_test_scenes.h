@@ -8,6 +8,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "backend/native_backend.h"
 #include "dynamics/rigid_body.h"
@@ -50,6 +51,16 @@ inline double depthBelowFloor(const BodyState& st, const Vec3& h) {
         lowest = std::min(lowest, st.pose.apply(corner).z());
     }
     return -lowest;
+}
+
+// [m] the deepest overlap of neighbours in a row of cubes of half extent `half` along x (from their
+// positions: an independent ruler); <= 0 if every neighbour is apart.
+inline double rowOverlap(const Backend& be, const std::vector<int>& row, double half) {
+    double overlap = -1e9;
+    for (std::size_t k = 1; k < row.size(); ++k)
+        overlap = std::max(overlap, 2 * half - (be.bodyState(row[k]).pose.position.x() -
+                                                be.bodyState(row[k - 1]).pose.position.x()));
+    return overlap;
 }
 
 inline std::unique_ptr<NativeBackend> makeBackend(const Scene& s, NativeSettings settings = {}) {
