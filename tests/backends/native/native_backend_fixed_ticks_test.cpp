@@ -187,8 +187,8 @@ TEST(NativeFixedTicks, PairBoundsSkipQueriesNotResults) {
 // independent of the backend: the boxes' x positions (overlap of neighbours) and the momentum.
 // The contact phase passes most of the blow on (the collision phase's few sweeps leave a 10:1 chain
 // still closing); its impulse on a struck box is applied at once, or the box sinks by half its
-// approach over the tick (32 mm without that, 20 mm with only more passes). fixed-soft is not held
-// to it: its sub-steps move a box at their mean velocity, and it overlaps by 17 mm here.
+// approach over the tick (19 mm without that; 32 mm with 8 impact passes and without it). fixed-soft
+// is not held to it: its sub-steps move a box at their mean velocity, and it overlaps by 17 mm here.
 TEST(NativeFixedTicks, BlowRunsDownATwelveBoxRow) {
     const double cd = 1e-3, half = 0.25, pitch = 2 * half + 0.01;
     for (TouchingRegime regime : {TouchingRegime::Fixed}) {

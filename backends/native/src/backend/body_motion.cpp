@@ -125,12 +125,9 @@ Aabb NativeBackend::sweptBox(int body) const {
 }
 
 bool NativeBackend::impactingContact(int body, const BodyImpulse& imp, double h) const {
-    const auto i = static_cast<std::size_t>(body);
-    const RigidBody& rb = bodies_[i];
+    const RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
     // The change over the tick: gravity's and the contact's. A supported body's cancel.
-    const Vec3 dv = scene_.gravity * h + rb.inv_mass * imp.linear;
-    const double dw = (rb.invInertiaWorld() * imp.angular).norm();
-    return dv.norm() + dw * shapes_[i].outer_radius > scene_.gravity.norm() * h;
+    return changedFaster(scene_.gravity * h + rb.inv_mass * imp.linear, rb.invInertiaWorld() * imp.angular, body, h);
 }
 
 void NativeBackend::applyContactImpact(int body, const BodyImpulse& imp) {

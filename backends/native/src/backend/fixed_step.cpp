@@ -35,9 +35,10 @@ int NativeBackend::fixedTicksFor(double dt) {
     const double tick = dt / static_cast<double>(base);
     double ticks = base;
     for (int p : candidates_) {
-        const double size = smallerInnerRadius(pairs_[static_cast<std::size_t>(p)], true);
+        const PairState& ps = pairs_[static_cast<std::size_t>(p)];
+        const double size = smallerInnerRadius(ps, true);
         if (!(size < kNever) || !(cap_fraction * size > 0.0)) continue;
-        ticks = std::max(ticks, std::ceil(closingSpeed(pairs_[static_cast<std::size_t>(p)], tick) * dt / (cap_fraction * size)));
+        ticks = std::max(ticks, std::ceil(closingSpeed(ps, tick) * dt / (cap_fraction * size)));
     }
     return static_cast<int>(std::min<double>(ticks, std::max(base, settings_.max_fixed_ticks)));
 }
@@ -77,7 +78,7 @@ void NativeBackend::fixedTick(double t) {
     auto pushes = [this](int body, int other) {   // a tracked body against a dynamic one
         return bodies_[static_cast<std::size_t>(body)].is_kinematic && !infinite_mass_[static_cast<std::size_t>(other)];
     };
-    lowerGapBounds();
+    if (settings_.pair_bounds) lowerGapBounds();
     std::vector<int>& due = step_due_;
     due.clear();
     for (int p : candidates_) {
@@ -191,7 +192,9 @@ void NativeBackend::lowerGapBounds() {
     }
     for (int p : candidates_) {
         PairState& ps = pairs_[static_cast<std::size_t>(p)];
-        if (first || ps.gap_step != step_index_ - 1) continue;   // no bound from the last tick
+        // No bound from the last tick (never queried, or out of the broad phase at some tick since:
+        // its bound missed that tick's motion): it stays unbounded until its next query.
+        if (first || ps.gap_step != step_index_ - 1) continue;
         ps.gap_bound -= moved[static_cast<std::size_t>(ps.a)] + moved[static_cast<std::size_t>(ps.b)];
         ps.gap_step = step_index_;
     }
@@ -203,10 +206,12 @@ bool NativeBackend::boundedApart(const PairState& ps) const {
 }
 
 bool NativeBackend::kickedFaster(const RigidBody& before, const RigidBody& after, int body, double tick) const {
-    const double dv = (after.velocity - before.velocity).norm() +
-                      (after.angularVelocity() - before.angularVelocity()).norm() *
-                          shapes_[static_cast<std::size_t>(body)].outer_radius;
-    return dv > scene_.gravity.norm() * tick;
+    return changedFaster(after.velocity - before.velocity, after.angularVelocity() - before.angularVelocity(), body,
+                         tick);
+}
+
+bool NativeBackend::changedFaster(const Vec3& dv, const Vec3& dw, int body, double tick) const {
+    return dv.norm() + dw.norm() * shapes_[static_cast<std::size_t>(body)].outer_radius > scene_.gravity.norm() * tick;
 }
 
 void NativeBackend::markSampled(const PairSample& s) {

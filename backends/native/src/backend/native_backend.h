@@ -123,6 +123,9 @@ private:
     /// Fixed ticks: an impulse changed `body` from `before` to `after` by more than gravity does in
     /// `tick` [s] (COM speed plus |Δω| × outer radius): an impact, not a resting contact's stop.
     bool kickedFaster(const RigidBody& before, const RigidBody& after, int body, double tick) const;
+    /// A change of `body`'s COM velocity by `dv` and angular velocity by `dw` exceeds what gravity
+    /// does in `tick` [s]: |dv| + |dw| x outer radius > g x tick (kickedFaster, impactingContact).
+    bool changedFaster(const Vec3& dv, const Vec3& dw, int body, double tick) const;
     /// The pair's touching state after a sample at a fixed tick (no queue key, no protection tick).
     void markSampled(const PairSample& s);
     /// [s] the earliest queue key or island tick, not before t.

@@ -99,7 +99,6 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
         PairState& ps = pairState(bp.a, bp.b);
         const int idx = static_cast<int>(&ps - pairs_.data());
         ps.in_broad_phase = true;
-        ps.gap_step = -1;   // no distance bound yet (fixed ticks)
         entered.push_back(idx);
         insertOrdered(candidates_, idx);
         insertOrdered(body_pairs_[static_cast<std::size_t>(bp.a)], idx);
@@ -109,7 +108,6 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
         const int idx = pair_index_.at(pairKey(bp.a, bp.b));
         PairState& ps = pairs_[static_cast<std::size_t>(idx)];
         ps.in_broad_phase = false;   // its boxes parted: it cannot touch before they meet again
-        ps.gap_step = -1;
         queue_.removePair(idx);
         if (ps.touching) {
             ps.touching = false;

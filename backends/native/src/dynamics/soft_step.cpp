@@ -52,9 +52,8 @@ double pushOutRate(double hertz, double zeta, double h) {
     return omega / (2.0 * zeta + h * omega);
 }
 
-double effectiveMass(const SoftBody& a, const SoftBody& b, const Vec3& ra_d, const Vec3& rb_d, const Vec3& ia_d,
-                     const Vec3& ib_d) {
-    const double k = a.inv_mass + b.inv_mass + ra_d.dot(ia_d) + rb_d.dot(ib_d);
+double effectiveMass(const SoftBody& a, const SoftBody& b, const ConstraintRow& row) {
+    const double k = a.inv_mass + b.inv_mass + row.ra.dot(row.ia) + row.rb.dot(row.ib);
     return k > 0.0 ? 1.0 / k : 0.0;
 }
 
@@ -174,9 +173,9 @@ ContactSolverReport solveSoftStep(const std::vector<RigidBody>& bodies, std::vec
             p.row_n = ConstraintRow::along(p.ra, p.rb, nrm, a.inv_inertia, b.inv_inertia);
             p.row_t1 = ConstraintRow::along(p.ra, p.rb, t1, a.inv_inertia, b.inv_inertia);
             p.row_t2 = ConstraintRow::along(p.ra, p.rb, t2, a.inv_inertia, b.inv_inertia);
-            p.normal_mass = effectiveMass(a, b, p.row_n.ra, p.row_n.rb, p.row_n.ia, p.row_n.ib);
-            p.t1_mass = effectiveMass(a, b, p.row_t1.ra, p.row_t1.rb, p.row_t1.ia, p.row_t1.ib);
-            p.t2_mass = effectiveMass(a, b, p.row_t2.ra, p.row_t2.rb, p.row_t2.ia, p.row_t2.ib);
+            p.normal_mass = effectiveMass(a, b, p.row_n);
+            p.t1_mass = effectiveMass(a, b, p.row_t1);
+            p.t2_mass = effectiveMass(a, b, p.row_t2);
             const double gap = i < m.point_gap.size() ? m.point_gap[i] : m.distance;
             if (gap < settings.correction_floor) corrected = true;
             // A point inside the window is held where it is (it may not close further, and below
