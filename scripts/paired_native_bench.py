@@ -8,7 +8,7 @@ worst step, state hash, penetration_recovered, position corrections, internal st
 the largest displacement of any body from its start (and after 1 s).
 
   python3 scripts/paired_native_bench.py --before OLD/bin/vroc --after build/bin/vroc \
-      --duration 4 --repeats 3 --csv out.csv pyramid20_small bin_boxes100 scenes/notepad.json
+      --duration 4 --repeats 3 --csv out.csv [--set native.touching=fixed] pyramid20_small bin_boxes100 scenes/notepad.json
 A bare name is scenes/stress/NAME.json.
 """
 import argparse, csv, json, math, os, statistics, subprocess, sys, tempfile
@@ -44,9 +44,12 @@ def main():
     ap.add_argument("--duration", type=float, default=4.0)
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--csv", required=True)
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="a native setting for both builds (repeatable), e.g. native.touching=fixed")
     ap.add_argument("scenes", nargs="+")
     a = ap.parse_args()
     configs = {"before": (a.before, "native"), "after": (a.after, "native"), "bullet": (a.after, "bullet")}
+    sets = {"native": [x for kv in a.set for x in ("--set", kv)], "bullet": []}
     rows = []
     work = tempfile.mkdtemp(prefix="paired_bench_")
     for s in a.scenes:
@@ -59,7 +62,8 @@ def main():
                 out = os.path.join(work, f"{name}_{k}")
                 subprocess.run(["rm", "-rf", out])
                 rc = subprocess.run([binary, "run", path, "--backend", backend, "--duration", str(a.duration),
-                                     "--out", out, "-q"] + no_view_flag(binary), capture_output=True).returncode
+                                     "--out", out, "-q"] + no_view_flag(binary) + sets[backend],
+                                    capture_output=True).returncode
                 if rc != 0:
                     sys.exit(f"{binary} run {path} --backend {backend} failed with exit code {rc}")
                 j = json.load(open(os.path.join(out, "run.json")))

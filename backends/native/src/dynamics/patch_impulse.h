@@ -22,7 +22,7 @@ namespace vroc::native {
 constexpr int kMaxPatchPoints = static_cast<int>(kMaxManifoldSlots);
 
 struct PatchImpulse {
-    std::vector<double> normal;          ///< [N s] per point, >= 0, along n (on B; -on A)
+    PointArray<double> normal;           ///< [N s] per point, >= 0, along n (on B; -on A)
     Vec3 tangent = Vec3::Zero();         ///< [N s] friction impulse at the centroid, world (on B)
     ImpulseTrouble trouble = ImpulseTrouble::None;
     bool any() const;
