@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -43,24 +42,20 @@ int freeIndices(const FreeSet& free, int count, Indices& idx) {
 
 // LDL' of the leading k x k block of a symmetric matrix, in place, without pivoting: for the
 // active set's inner solves, whose blocks the ridge below makes positive definite (at most eight
-// rows: no dynamic-size factorisation and no allocation). Returns the pivots' smallest over
-// largest, 0 if any pivot is not positive.
-double factorLdlt(Block& a, int k) {
-    double dmin = std::numeric_limits<double>::infinity(), dmax = 0.0;
+// rows: no dynamic-size factorisation and no allocation). False if a pivot is not positive.
+bool factorLdlt(Block& a, int k) {
     for (int j = 0; j < k; ++j) {
         double d = a(j, j);
         for (int p = 0; p < j; ++p) d -= a(j, p) * a(j, p) * a(p, p);
-        if (!(d > 0.0)) return 0.0;
+        if (!(d > 0.0)) return false;
         a(j, j) = d;
         for (int i = j + 1; i < k; ++i) {
             double x = a(i, j);
             for (int p = 0; p < j; ++p) x -= a(i, p) * a(j, p) * a(p, p);
             a(i, j) = x / d;
         }
-        dmin = std::min(dmin, d);
-        dmax = std::max(dmax, d);
     }
-    return k > 0 ? dmin / dmax : 0.0;
+    return true;
 }
 
 // Solves with factorLdlt's factors, in place.
@@ -73,19 +68,16 @@ void solveLdlt(const Block& a, int k, BlockVector& x) {
 }
 
 // The free points' subsystem M_ff z_f = -q_f (M positive definite), its answer scattered back to
-// all points, zero elsewhere; not finite if the factorisation fails.
-BlockVector solveOnFreeSet(const Block& m, const BlockVector& q, const Indices& idx, int k) {
+// all points in `z`, zero elsewhere; false if the factorisation fails.
+bool solveOnFreeSet(const Block& m, const BlockVector& q, const Indices& idx, int k, BlockVector& z) {
     Block mf;
     BlockVector rhs;
     gatherFreeSet(m, q, idx, k, mf, rhs);
-    BlockVector z = BlockVector::Zero();
-    if (!(factorLdlt(mf, k) > 0.0)) {
-        z(0) = std::numeric_limits<double>::quiet_NaN();
-        return z;
-    }
+    if (!factorLdlt(mf, k)) return false;
     solveLdlt(mf, k, rhs);
+    z = BlockVector::Zero();
     for (int r = 0; r < k; ++r) z(idx[static_cast<std::size_t>(r)]) = rhs(r);
-    return z;
+    return true;
 }
 
 // The minimum-norm solution of a free set's subsystem: a clearly definite block (its pivoted LDL'
@@ -148,11 +140,12 @@ BlockVector solveNormalLcp(const Block& m_in, const BlockVector& q, int count) {
         for (int inner = 0; inner < 4 * kMaxPoints; ++inner) {
             const int k = freeIndices(free, count, idx);
             if (k == 0) return;
-            const BlockVector z = solveOnFreeSet(m, q, idx, k);
+            BlockVector z;
+            if (!solveOnFreeSet(m, q, idx, k, z) || !z.allFinite()) return;
             bool positive = true;
             for (int r = 0; r < k; ++r) positive = positive && z(idx[static_cast<std::size_t>(r)]) > 0.0;
-            if (positive || !z.allFinite()) {
-                if (z.allFinite()) y = z;
+            if (positive) {
+                y = z;
                 return;
             }
             // Step from y towards z as far as every free impulse stays >= 0; those reaching 0 leave.
