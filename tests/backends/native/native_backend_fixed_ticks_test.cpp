@@ -5,6 +5,7 @@
 // free flight, the corners of boxes below the floor from their poses, the tick count of the schedule,
 // and the state hash for several worker counts.
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -215,6 +216,33 @@ TEST(NativeFixedTicks, BlowRunsDownATwelveBoxRow) {
             momentum += (k == 0 ? 10.0 : 1.0) * be->bodyState(row[k]).linear_velocity.x();
         EXPECT_NEAR(momentum, 150.0, 0.5) << name(regime) << ": momentum along the row (no friction)";
     }
+}
+
+// A pair the tick's broad phase left out is met once a blow sends a body towards it. Ball A rises
+// off the floor (its box swept over the tick no longer reaches the floor's); a heavy ball B falls
+// onto it from just above at 3 m/s. B's blow sends A down at about 5 m/s within the same tick: the
+// impact passes sweep A's box again at its new velocity, so A's pair with the floor is sampled and
+// A bounces off the floor in that tick. (Without the new sweep A met the floor a tick later, 48 mm
+// deep, and was repaired.) Ruler independent of the backend: A's height over the floor.
+TEST(NativeFixedTicks, BlowTowardsAPairTheTickLeftOutIsMet) {
+    const double cd = 1e-3, r = 0.05;
+    Scene s = bareScene(cd);
+    const int mat = addMaterial(s, 0.5, 0.0);
+    addFloor(s, mat, 40.0);
+    const int a = addBody(s, "a", Shape::sphere(r), at(Vec3(0, 0, r + 3 * cd)), mat, false, 0.2);
+    const int b = addBody(s, "b", Shape::sphere(r), at(Vec3(0, 0, 3 * r + 4 * cd)), mat, false, 5.0);
+    s.bodies[static_cast<std::size_t>(a)].linear_velocity = Vec3(0, 0, 0.3);
+    s.bodies[static_cast<std::size_t>(b)].linear_velocity = Vec3(0, 0, -3.0);
+    auto be = makeBackend(s, fixedSettings(TouchingRegime::Fixed));
+    double lowest = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < 30; ++f) {
+        be->stepFrame(s.frame_dt);
+        lowest = std::min(lowest, be->bodyState(a).pose.position.z() - r);
+    }
+    EXPECT_GE(lowest, -cd) << "ball A's lowest point against the floor";
+    EXPECT_LE(be->statistics().at("native.deepest_penetration_m"), cd);
+    EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u);
+    EXPECT_GT(be->statistics().at("native.fixed_impact_passes"), 0.0);
 }
 
 // The same bits for any worker count.

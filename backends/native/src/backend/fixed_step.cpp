@@ -108,6 +108,10 @@ void NativeBackend::fixedTick(double t) {
         std::vector<int>& kicked = island_scratch_.kicked;
         std::sort(kicked.begin(), kicked.end());
         kicked.erase(std::unique(kicked.begin(), kicked.end()), kicked.end());
+        // Their boxes, swept again at the new velocities: a pair the tick's broad phase left out (a
+        // ball bouncing up off the floor) is one again once a blow sends the ball back down.
+        entered.clear();
+        updateBroadPhase(false, entered);
         std::vector<int>& again = step_again_;
         again.clear();
         for (int body : kicked)
