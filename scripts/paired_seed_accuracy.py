@@ -10,6 +10,8 @@ how many seeds each build won (a two-sided sign test over the seeds where they d
     python3 scripts/paired_seed_accuracy.py --before OLD/vroc --after build/bin/vroc \\
         --kind mixed_pile --seeds 20001-20010 --duration 4 --set native.touching=fixed --csv out.csv
 
+With the same binary as --before and --after and --set-after KEY=VALUE, it compares two settings.
+
 Kinds: mixed_pile, bin_boxes, bin_hulls (100 bodies). Statistics: native.deepest_penetration_m,
 native.position_corrections, the penetration_recovered warnings, and the sum of step times.
 """
@@ -73,6 +75,8 @@ def main():
     ap.add_argument("--seeds", required=True, help="e.g. 20001-20010 or 1,5,9")
     ap.add_argument("--duration", type=float, default=4.0)
     ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="native setting, both builds")
+    ap.add_argument("--set-after", action="append", default=[], metavar="KEY=VALUE",
+                    help="native setting for the after build only (the same binary twice compares two settings)")
     ap.add_argument("--csv", help="per-seed results")
     args = ap.parse_args()
     for b in (args.before, args.after):
@@ -85,13 +89,15 @@ def main():
         path = os.path.join(work, scene["name"] + ".json")
         with open(path, "w") as f:
             json.dump(scene, f)
-        before, after = run(args.before, path, args.duration, args.set), run(args.after, path, args.duration, args.set)
+        before = run(args.before, path, args.duration, args.set)
+        after = run(args.after, path, args.duration, args.set + args.set_after)
         rows.append((seed, before, after))
         print(f"seed {seed}: deepest {before['deepest_mm']:.2f} -> {after['deepest_mm']:.2f} mm, "
               f"corrections {before['corrections']:.0f} -> {after['corrections']:.0f}, "
               f"recovered {before['recovered']:.0f} -> {after['recovered']:.0f}, "
               f"hash {'same' if before['hash'] == after['hash'] else 'differs'}", flush=True)
-    print(f"\n{args.kind}, {len(rows)} seeds, {args.duration} s, {' '.join(args.set) or 'defaults'}")
+    print(f"\n{args.kind}, {len(rows)} seeds, {args.duration} s, {' '.join(args.set) or 'defaults'}"
+          + (f"; after also {' '.join(args.set_after)}" if args.set_after else ""))
     print(f"{'statistic':<12} {'median before':>14} {'median after':>13} {'mean before':>12} {'mean after':>11}"
           f"  after lower / higher / equal  sign-test p")
     for key in STATS:
