@@ -18,7 +18,9 @@ native.position_corrections, the penetration_recovered warnings, and the sum of 
 import argparse, csv, json, math, os, statistics, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenes", "stress"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import generate_stress as g  # noqa: E402
+from paired_native_bench import no_view_flag  # noqa: E402  (a BEFORE build may predate --no-view)
 
 KINDS = {
     "mixed_pile": lambda seed: g.mixed_pile(seed=seed, name=f"mixed_pile200_seed{seed}"),
@@ -43,7 +45,8 @@ def seeds_of(text):
 
 def run(vroc, scene_path, duration, sets):
     out = tempfile.mkdtemp(prefix="seedacc_")
-    cmd = [vroc, "run", scene_path, "--backend", "native", "--duration", str(duration), "--out", out, "-q", "--no-view"]
+    cmd = [vroc, "run", scene_path, "--backend", "native", "--duration", str(duration), "--out", out, "-q"]
+    cmd += no_view_flag(vroc)
     for s in sets:
         cmd += ["--set", s]
     r = subprocess.run(cmd, capture_output=True, text=True)
