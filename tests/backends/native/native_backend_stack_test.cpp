@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A stack of ten 0.5 m boxes stands for 10 s at 60 Hz with the top box drifting <= 1 cm;
-// it also holds when the contact sweeps stop at a tolerance. A base-30 pyramid (30 levels) stands
+// it also holds when the contact sweeps stop at a tolerance. Six cubes stacked beside a ledge that
+// touches only the top one stand still (shock levels that follow gravity). A base-30 pyramid (30 levels) stands
 // still: every box within 0.1 mm of where it was placed (positions against the placement: an
 // independent ruler).
 #include <vector>
@@ -41,6 +42,52 @@ TEST(NativeStack, TenBoxesHoldForTenSeconds) {
     }
     const auto stats = be->statistics();
     RecordProperty("internal_steps_per_frame_mean", std::to_string(stats.at("native.internal_steps_per_frame_mean")));
+}
+
+// Six 0.1 m cubes stacked 0.5 mm apart on the floor, the top one beside a real ledge 0.5 mm from
+// its side (nothing beside the others): at rest, nothing should move. Shock levels that follow
+// gravity (native.shock_support, default 0: a contact carries a level only if its normal rises
+// towards the upper body) give the ledge no say in the stack's order. Levels from every static
+// body (-1) made the top cube level 1 and the cubes under it levels 2 and 3 from the top down: the
+// shock sweeps and the position pass held the top and drove the middle into the floor stack, and
+// the stack fell (boxes 200-500 mm down in 3 s, both regimes). The ruler is each cube's placement.
+Scene stackBesideLedge() {
+    const double cd = 1e-3, half = 0.05, gap = 0.5 * cd;
+    Scene s = bareScene(cd);
+    const int mat = addMaterial(s, 0.0, 0.5);
+    addFloor(s, mat, 1.0);
+    double z = 0.0;
+    for (int i = 0; i < 6; ++i) {
+        z = half + gap + i * (2 * half + gap);
+        addBody(s, "box" + std::to_string(i), Shape::box(Vec3(half, half, half)), at(Vec3(0, 0, z)), mat, false, 1.0);
+    }
+    addBody(s, "ledge", Shape::box(Vec3(0.1, 0.2, half)), at(Vec3(half + gap + 0.1, 0, z)), mat, true);
+    return s;
+}
+
+double stackMotion(const Scene& s, NativeSettings settings, double seconds) {
+    auto be = makeBackend(s, settings);
+    std::vector<Vec3> start;
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) start.push_back(be->bodyState(static_cast<int>(i)).pose.position);
+    double worst = 0.0;
+    for (int f = 0; f < static_cast<int>(seconds / s.frame_dt + 0.5); ++f) {
+        be->stepFrame(s.frame_dt);
+        for (std::size_t i = 0; i < s.bodies.size(); ++i)
+            worst = std::max(worst, (be->bodyState(static_cast<int>(i)).pose.position - start[i]).norm());
+    }
+    return worst;
+}
+
+TEST(NativeStack, StackBesideALedgeStandsWithLevelsThatFollowGravity) {
+    const Scene s = stackBesideLedge();
+    for (TouchingRegime touching : {TouchingRegime::Protected, TouchingRegime::Fixed}) {
+        NativeSettings settings;
+        settings.touching = touching;
+        EXPECT_LE(stackMotion(s, settings, 3.0), 1e-4) << "regime " << static_cast<int>(touching);
+        // The old rule is what this guards against: with it the stack falls.
+        settings.shock_support = -1.0;
+        EXPECT_GE(stackMotion(s, settings, 3.0), 0.05) << "regime " << static_cast<int>(touching) << ", levels from the ledge";
+    }
 }
 
 // native.solver_tolerance: a warm-started resting stack converges in fewer sweeps than the fixed

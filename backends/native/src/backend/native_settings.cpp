@@ -29,6 +29,17 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  {},
                  "shock propagation runs at least as many sweeps a level as the island has levels (a tall "
                  "pile's per-level residuals add up at its top); false: native.shock_iterations exactly"});
+    s.push_back({"native.shock_support",
+                 T::Real,
+                 "0",
+                 -1,
+                 1,
+                 {},
+                 "a contact passes a stack level from the lower body to the upper one (shock propagation and "
+                 "the position pass freeze the lower) only if its normal, pointing to the upper body, rises "
+                 "against gravity by more than this (the sine of its elevation): a box leaning on a wall is "
+                 "not ground for the boxes below it. -1: any contact, levels are graph distances from every "
+                 "static or tracked body (docs/native-dynamics.md, \"Levels that follow gravity\")"});
     s.push_back({"native.solver_tolerance", T::Real, "0", 0, 1, {},
                  "[m/s] contact and shock sweeps stop early once a whole sweep changes no contact's "
                  "relative velocity by more than this (0: always run every sweep)"});
@@ -151,6 +162,7 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.shock_iterations"))
         n.shock_iterations = static_cast<int>(settings.integer("native.shock_iterations"));
     if (has("native.shock_per_level")) n.shock_per_level = settings.boolean("native.shock_per_level");
+    if (has("native.shock_support")) n.shock_support = settings.real("native.shock_support");
     if (has("native.solver_tolerance")) n.solver_tolerance = settings.real("native.solver_tolerance");
     if (has("native.contact_substeps"))
         n.contact_substeps = static_cast<int>(settings.integer("native.contact_substeps"));

@@ -44,6 +44,9 @@ struct NativeSettings {
     int contact_iterations = 10;            ///< contact-phase Gauss-Seidel sweeps
     int shock_iterations = 8;               ///< shock-propagation sweeps per level (0 = off)
     bool shock_per_level = true;            ///< at least as many shock sweeps a level as the island has levels
+    /// [-] a contact passes a shock level up only if its normal, towards the upper body, rises against
+    /// gravity by more than this (sine of its elevation); -1: any contact (levels from every static body)
+    double shock_support = 0.0;
     double solver_tolerance = 0.0;          ///< [m/s] contact sweeps stop once a sweep changes no velocity more
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
     TouchingRegime touching = TouchingRegime::Protected;   ///< how touching islands are scheduled (speculative: experimental)

@@ -208,14 +208,20 @@ void relaxPlastic(std::vector<WorkBody>& wb, PointConstraint& c, int& ill) {
 }
 
 // Shock levels: each body's graph distance from the bodies of infinite mass (breadth first over
-// the contact graph, kept as compressed adjacency rows: three allocations, not one per body).
+// the contact graph, kept as compressed adjacency rows: three allocations, not one per body). With
+// `rise` > -1 under gravity (`up` its unit opposite), a contact leads from a body to the next level
+// only if its normal, pointing to that body, rises by more than `rise`: the level then says what
+// holds a body up. Without that, a box lying against a wall high in a bin is level 1, and the boxes
+// under it are frozen below it, or pushed down from it, into the floor (400 boxes in a bin
+// repaired 189 penetrations of 2-6 cm in 4 s on fixed ticks).
 // The buffers a level search reuses (see SolverScratch).
 struct LevelScratch {
     std::vector<int> start, adj, fill, queue;
 };
 
 void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies,
-                  const std::vector<PointConstraint>& cs, LevelScratch& scratch) {
+                  const std::vector<PointConstraint>& cs, const Vec3& up, double rise, LevelScratch& scratch) {
+    const bool any = !(rise > -1.0) || up.isZero(0.0);
     std::vector<int>& start = scratch.start;
     start.assign(wb.size() + 1, 0);
     for (const auto& c : cs) {
@@ -228,9 +234,10 @@ void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodie
     {
         std::vector<int>& fill = scratch.fill;
         fill.assign(start.begin(), start.end() - 1);
-        for (const auto& c : cs) {
-            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.a)]++)] = c.b;
-            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.b)]++)] = c.a;
+        for (const auto& c : cs) {   // -1: no way up through this contact
+            const double up_to_b = c.n.dot(up);
+            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.a)]++)] = any || up_to_b > rise ? c.b : -1;
+            adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.b)]++)] = any || -up_to_b > rise ? c.a : -1;
         }
     }
     std::vector<int>& queue = scratch.queue;  // breadth-first order; `head` is the front
@@ -243,7 +250,7 @@ void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodie
         const int i = queue[head];
         for (int k = start[static_cast<std::size_t>(i)]; k < start[static_cast<std::size_t>(i) + 1]; ++k) {
             const int j = adj[static_cast<std::size_t>(k)];
-            if (wb[j].level == kUnreached) {
+            if (j >= 0 && wb[j].level == kUnreached) {
                 wb[j].level = wb[i].level + 1;
                 queue.push_back(j);
             }
@@ -665,7 +672,7 @@ SolverScratch& solverScratch() {
 
 int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies, const std::vector<Patch>& patches,
                  const std::vector<ContactManifold>& manifolds, double h, const ContactSolverSettings& settings,
-                 bool levels_assigned, SolverScratch& scratch, std::vector<BodyImpulse>& impulses) {
+                 const Vec3& up, bool levels_assigned, SolverScratch& scratch, std::vector<BodyImpulse>& impulses) {
     if (settings.correction_iterations <= 0 || !(h > 0.0)) return 0;
     // The levels of the contact graph: the velocity sweeps assigned them already, from the same
     // pairs (a patch's points join the bodies its centroid joins).
@@ -673,7 +680,7 @@ int positionPass(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies
         std::vector<PointConstraint>& centroids = scratch.centroids;
         centroids.clear();
         for (const Patch& p : patches) centroids.push_back(p.friction);
-        assignLevels(wb, bodies, centroids, scratch.levels);
+        assignLevels(wb, bodies, centroids, up, settings.shock_support, scratch.levels);
     }
     // Every patch takes part (pseudo normal speed >= rate x (target - reached) / h, which is
     // negative for a gap above the target): a push never drives a body into a neighbour beyond
@@ -729,6 +736,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
                                       std::vector<BodyImpulse>& impulses) {
     ContactSolverReport report;
     SolverScratch& scratch = solverScratch();
+    const Vec3 up = gravity.norm() > 0.0 ? Vec3(-gravity / gravity.norm()) : Vec3::Zero();   // for the levels
     std::vector<WorkBody>& wb = scratch.wb;
     wb.assign(bodies.size(), WorkBody{});
     for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -822,7 +830,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
                 ++cold;
         const bool large_cold = manifolds.size() >= kLargeIsland && 2 * cold > manifolds.size();
         const int sweeps = large_cold ? settings.cold_factor * settings.iterations : settings.iterations;
-        assignLevels(wb, bodies, cs, scratch.levels);
+        assignLevels(wb, bodies, cs, up, settings.shock_support, scratch.levels);
         SweepSchedule& plan = scratch.plan;
         scheduleSweeps(wb, patches, manifolds.size() >= kTeamManifolds, scratch.schedule, plan);
         std::array<std::vector<double>, 2>& changes = scratch.changes;
@@ -853,7 +861,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     // Impulses per body, recovered from the velocity change (covers every pass above).
     impulses.assign(bodies.size(), BodyImpulse{});
     report.corrected_patches =
-        positionPass(wb, bodies, patches, manifolds, h, settings, !single_point, scratch, impulses);
+        positionPass(wb, bodies, patches, manifolds, h, settings, up, !single_point, scratch, impulses);
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& rb = bodies[i];
         if (rb.infiniteMass()) continue;

@@ -32,6 +32,10 @@ struct ContactSolverSettings {
     /// Shock sweeps per level: at least the island's number of levels (a tall pile's per-level
     /// residuals add up at its top).
     bool shock_per_level = true;
+    /// [-] a contact carries a level up only if its normal, pointing to the upper body, rises against
+    /// gravity by more than this (the sine of its elevation above the horizontal); -1 (or no
+    /// gravity): every contact, so levels are plain graph distances from the bodies of infinite mass.
+    double shock_support = 0.0;
     /// [m/s] sweeps (and each level's shock sweeps) stop early once no relaxation in a whole sweep
     /// changed a contact's relative velocity by more than this; 0 runs every sweep.
     double tolerance = 0.0;
