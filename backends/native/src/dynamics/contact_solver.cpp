@@ -207,6 +207,11 @@ void relaxPlastic(std::vector<WorkBody>& wb, PointConstraint& c, int& ill) {
     c.lambda_n += std::max(0.0, j.dot(c.n));
 }
 
+// The buffers a level search reuses (see SolverScratch).
+struct LevelScratch {
+    std::vector<int> start, adj, fill, queue;
+};
+
 // Shock levels: each body's graph distance from the bodies of infinite mass (breadth first over
 // the contact graph, kept as compressed adjacency rows: three allocations, not one per body). With
 // `rise` > -1 under gravity (`up` its unit opposite), a contact leads from a body to the next level
@@ -214,11 +219,6 @@ void relaxPlastic(std::vector<WorkBody>& wb, PointConstraint& c, int& ill) {
 // holds a body up. Without that, a box lying against a wall high in a bin is level 1, and the boxes
 // under it are frozen below it, or pushed down from it, into the floor (400 boxes in a bin
 // repaired 189 penetrations of 2-6 cm in 4 s on fixed ticks).
-// The buffers a level search reuses (see SolverScratch).
-struct LevelScratch {
-    std::vector<int> start, adj, fill, queue;
-};
-
 void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodies,
                   const std::vector<PointConstraint>& cs, const Vec3& up, double rise, LevelScratch& scratch) {
     const bool any = !(rise > -1.0) || up.isZero(0.0);
