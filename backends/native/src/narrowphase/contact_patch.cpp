@@ -299,33 +299,27 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
             ++touching;
         }
     }
-    // A patch that touches but misses where the bodies overlap deepest (the query finds them deeper
-    // than its deepest point by more than the tolerance: the faces the normal picked do not hold the
-    // penetrating corner) gets the query's deepest point too, so the solve pushes where the overlap
-    // is. (In a turning drum, pairs 1.4 cm deep had patches whose points all lay 0.3-1 mm apart, and
-    // they sank a millimetre a frame.)
-    if (touching > 0) {
-        const double deepest_gap = *std::min_element(patch.gaps.begin(), patch.gaps.end());
-        if (deepest_gap > result.distance + tolerance) {
-            patch.points.push_back(mid);
-            patch.gaps.push_back(result.distance);
-            touching_sum += mid;
-            ++touching;
-        }
-    }
-    // Nothing touches yet (a pair closing within reach): the patch is kept if it holds the closest
-    // features (a point as close as the pair, to the tolerance); otherwise they are elsewhere and
-    // the closest point joins it. Its centroid is then the closest point.
-    if (touching == 0) {
-        if (patch.points.empty()) return;
-        const auto deepest = std::min_element(patch.gaps.begin(), patch.gaps.end());
-        if (*deepest > result.distance + tolerance) {
-            patch.points.push_back(mid);
-            patch.gaps.push_back(result.distance);
+    // The patch must hold the closest features: where the query finds the bodies closer (deeper)
+    // than the patch's closest point by more than the tolerance, they are elsewhere, and the query's
+    // closest point joins it. Nothing touching yet (a pair closing within reach), the patch's
+    // centroid is then that point, else its closest one. A patch that touches but misses where the
+    // bodies overlap (the faces the normal picked do not hold the penetrating corner) gets the
+    // point among what touches, so the solve pushes where the overlap is. (In a turning drum, pairs
+    // 1.4 cm deep had patches whose points all lay 0.3-1 mm apart, and sank a millimetre a frame.)
+    if (patch.points.empty()) return;
+    const auto deepest = std::min_element(patch.gaps.begin(), patch.gaps.end());
+    const std::size_t closest = static_cast<std::size_t>(deepest - patch.gaps.begin());
+    if (*deepest > result.distance + tolerance) {
+        patch.points.push_back(mid);
+        patch.gaps.push_back(result.distance);
+        if (touching == 0) {
             patch.centroid = mid;
-        } else {
-            patch.centroid = patch.points[static_cast<std::size_t>(deepest - patch.gaps.begin())];
+            return;
         }
+        touching_sum += mid;
+        ++touching;
+    } else if (touching == 0) {
+        patch.centroid = patch.points[closest];
         return;
     }
     patch.centroid = touching_sum / touching;
