@@ -819,16 +819,22 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
             for (auto& c : cs) relaxPlastic(wb, c, report.ill_conditioned);
         }
     } else {
-        // A large cold island (most patches without impulses to start from: the first solve of a
-        // pile) gets more sweeps: warm starting cannot help it yet, and what this solve leaves
-        // unconverged is the settling a pile keeps for ever. Small islands converge in the usual
-        // sweeps, and in a bin they form all the time.
-        std::size_t cold = 0;
-        for (const auto& mf : manifolds)
+        // A large cold island (most touching patches without impulses to start from: the first
+        // solve of a pile) gets more sweeps: warm starting cannot help it yet, and what this solve
+        // leaves unconverged is the settling a pile keeps for ever. Small islands converge in the
+        // usual sweeps, and in a bin they form all the time. Speculative patches (not touching yet)
+        // count neither way: their impulse is zero because nothing presses on them, not because
+        // nothing is known (counted as cold, a turning drum's or a filling bin's many near pairs
+        // ran half of their solves at the cold count).
+        std::size_t cold = 0, touching = 0;
+        for (const auto& mf : manifolds) {
+            if (!(mf.distance < settings.speculative_from)) continue;
+            ++touching;
             if (!settings.warm_start || mf.point_impulse.empty() ||
                 std::all_of(mf.point_impulse.begin(), mf.point_impulse.end(), [](double x) { return x == 0.0; }))
                 ++cold;
-        const bool large_cold = manifolds.size() >= kLargeIsland && 2 * cold > manifolds.size();
+        }
+        const bool large_cold = touching >= kLargeIsland && 2 * cold > touching;
         const int sweeps = large_cold ? settings.cold_factor * settings.iterations : settings.iterations;
         assignLevels(wb, bodies, cs, up, settings.shock_support, scratch.levels);
         SweepSchedule& plan = scratch.plan;
