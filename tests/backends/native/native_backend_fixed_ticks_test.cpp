@@ -146,8 +146,9 @@ TEST(NativeFixedTicks, TumblingBoxesLandAndRest) {
     }
 }
 
-// A pair apart is not queried while its distance bound (its last distance, less how far its bodies'
-// points moved since) stays beyond its reach (native.pair_bounds). The query it skips would have
+// A pair apart is not queried, at a tick or in the impact passes after a blow, while its distance
+// bound (its last distance, less how far its bodies' points moved since) stays beyond its reach (at
+// its bodies' velocities then; native.pair_bounds). The query it skips would have
 // found it out of reach: the results are those of querying every pair at every tick (the second
 // run, the independent answer), bit for bit, with fewer queries. A row of resting boxes 1 cm apart,
 // a box dropped among them and a ball rolled into them: pairs apart that stay apart, and pairs apart

@@ -573,6 +573,10 @@ void NativeBackend::separatePenetrating(const PairSample& s) {
     b.com += (b.inv_mass / w) * push * s.normal;
     box_dirty_[static_cast<std::size_t>(ps.a)] = 1;
     box_dirty_[static_cast<std::size_t>(ps.b)] = 1;
+    // The moved bodies' distance bounds (fixed ticks' pair bounds) no longer hold: each of their
+    // pairs is queried at its next sample, not skipped on the old bound.
+    for (int body : {ps.a, ps.b})
+        for (int p : body_pairs_[static_cast<std::size_t>(body)]) pairs_[static_cast<std::size_t>(p)].gap_step = -1;
 }
 
 }  // namespace vroc::native
