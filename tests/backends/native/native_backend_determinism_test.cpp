@@ -82,6 +82,31 @@ TEST(NativeDeterminism, OneLargeIslandGivesOneHashForAnyThreadCount) {
     EXPECT_EQ(runHash(s, 3, 20), h1);
 }
 
+// A heavy box thrown into the pyramid: its blow runs through one large island, whose collision
+// phase the workers share wave by wave (impulse_waves.h), on both regimes; any worker count gives
+// the one-worker hash.
+TEST(NativeDeterminism, BlowIntoALargeIslandGivesOneHashForAnyThreadCount) {
+    Scene s = pyramidScene(12);
+    const int mat = s.bodies.back().material;
+    addBody(s, "striker", Shape::box(Vec3(0.15, 0.15, 0.15)), at(Vec3(-2.0, 0, 0.4)), mat, false, 10.0);
+    s.bodies.back().linear_velocity = Vec3(12.0, 0, 0);
+    for (TouchingRegime regime : {TouchingRegime::Protected, TouchingRegime::Fixed}) {
+        std::vector<std::uint64_t> hashes;
+        for (int threads : {1, 2, 3}) {
+            NativeSettings ns;
+            ns.threads = threads;
+            ns.touching = regime;
+            auto be = makeBackend(s, ns);
+            for (int f = 0; f < 40; ++f) be->stepFrame(s.frame_dt);
+            EXPECT_GE(be->statistics().at("native.max_island_bodies"), 78.0) << "the pyramid should be one island";
+            EXPECT_GT(be->statistics().at("collision_events"), 0.0) << "the striker meets the pyramid";
+            hashes.push_back(stateHash(*be));
+        }
+        EXPECT_EQ(hashes[1], hashes[0]) << "regime " << static_cast<int>(regime);
+        EXPECT_EQ(hashes[2], hashes[0]) << "regime " << static_cast<int>(regime);
+    }
+}
+
 TEST(NativeDeterminism, PileSettlesWithoutNumericalTrouble) {
     const Scene s = pileScene();
     auto be = makeBackend(s);

@@ -164,8 +164,9 @@ void NativeBackend::impactPass(std::vector<PairSample>& samples, double t) {
             is.solved.back().body_b = localOf(m.body_b);
             is.resting.push_back(0);   // new this tick: an impact, with its restitution
         }
+    // Called from the tick alone (no islands in flight): every worker may share it.
     collisionPhase(is.local, is.solved, is.resting, scene_.gravity.norm() * (frame_end_ - t), frame_end_ - t,
-                   is.collision);
+                   is.collision, partition_->workers(), is.waves);
     warnCollision(is.collision);
     for (std::size_t k = 0; k < is.bodies.size(); ++k) {
         if (is.collision.impulsed[k] == 0) continue;

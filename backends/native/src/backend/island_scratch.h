@@ -10,6 +10,7 @@
 #include "dynamics/contact.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/rigid_body.h"
+#include "scheduling/impulse_waves.h"
 
 namespace vroc::native {
 
@@ -19,6 +20,15 @@ struct CollisionPhaseReport {
     std::uint64_t ill_conditioned = 0, degenerate = 0, nonfinite = 0;
     std::vector<std::uint8_t> impulsed;  ///< per body of the island
 };
+
+/// One worker's count of a collision phase's troubles (summed into CollisionPhaseReport), on a
+/// cache line of its own.
+struct alignas(64) CollisionTally {
+    std::uint64_t ill_conditioned = 0, degenerate = 0, nonfinite = 0;
+};
+
+/// Most workers that share one collision phase (more: one worker runs it).
+constexpr int kMaxCollisionTeam = 64;
 
 /// One island's contact phase, computed on local copies (so islands can run on any worker).
 struct IslandSolve {
@@ -30,6 +40,7 @@ struct IslandSolve {
     std::vector<ContactManifold> solved;  // per local manifold, with outputs
     std::vector<std::uint8_t> resting;    // per local manifold
     CollisionPhaseReport collision;
+    ImpulseWaves waves;                   // the collision phase's waves, when a team shares it
     ContactSolverReport report;
 
     /// Empties it for another island, keeping the storage.

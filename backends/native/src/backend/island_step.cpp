@@ -2,6 +2,7 @@
 // Islands of the native step: bodies joined by touching pairs are solved together, at their
 // island's tick or when a contact appears in it, and nowhere else (docs/native-dynamics.md).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -10,6 +11,7 @@
 #include "dynamics/patch_impulse.h"
 #include "dynamics/soft_step.h"
 #include "dynamics/vroc1995_impulse.h"
+#include "scheduling/spin_barrier.h"
 
 namespace vroc::native {
 namespace {
@@ -225,7 +227,8 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             lm.body_b = localOf(lm.body_b);
             is.resting.push_back(resting[static_cast<std::size_t>(m)]);
         }
-        collisionPhase(is.local, is.solved, is.resting, resting_speed, h, is.collision);
+        // A shared island's team (settings.team_size workers) shares its collision phase too.
+        collisionPhase(is.local, is.solved, is.resting, resting_speed, h, is.collision, settings.team_size, is.waves);
         is.report = softContact(settings_.touching)
                         ? solveSoftStep(is.local, is.solved, h, scene_.gravity, soft, is.impulses)
                         : solveContactPhase(is.local, is.solved, h, scene_.gravity, settings, is.impulses);
@@ -419,53 +422,89 @@ bool NativeBackend::markLocalSolves(const std::vector<std::uint8_t>& due_root, s
 
 void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                                    const std::vector<std::uint8_t>& resting, double resting_speed, double tick,
-                                   CollisionPhaseReport& report) const {
+                                   CollisionPhaseReport& report, int workers, ImpulseWaves& waves) const {
     report.ill_conditioned = report.degenerate = report.nonfinite = 0;
     report.impulsed.assign(bodies.size(), 0);
-    for (int sweep = 0; sweep < settings_.collision_iterations; ++sweep) {
-        bool any = false;
-        for (std::size_t k = 0; k < manifolds.size(); ++k) {
-            ContactManifold& m = manifolds[k];
-            RigidBody& a = bodies[static_cast<std::size_t>(m.body_a)];
-            RigidBody& b = bodies[static_cast<std::size_t>(m.body_b)];
-            if (settings_.response == ResponseModel::NewtonCoulomb) {
-                any = manifoldCollision(a, b, m, resting[k] != 0, resting_speed, tick, report) || any;
-                continue;
-            }
-            if (!(m.distance < scene_.collision_distance)) continue;   // speculative: not the 1995 model's
-            const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
-            const double un = u.dot(m.normal);
-            if (!(un < 0.0)) continue;
-            // A resting contact's slow approach is stopped plastically (no micro-bounce); it must
-            // still be stopped now: the contact phase only fixes the end of the step. (Leaving it to
-            // the contact phase's block solve when the gap outlasts the tick holds pyramids a little
-            // stiller but lets tumbling boxes in bins dig in: 1.6-1.9x the penetration_recovered.)
-            const bool plastic = -un < settings_.restitution_threshold || (resting[k] != 0 && -un <= resting_speed);
-            const double e = plastic ? 0.0 : m.restitution;
-            const ImpulseResult r =
-                settings_.response == ResponseModel::Vroc1995
-                    ? vroc1995Impulse(a, b, m.centroid, m.normal, e)
-                    : newtonCoulombImpulse(a, b, m.centroid, m.normal, e, m.friction);
-            if (r.trouble == ImpulseTrouble::IllConditioned) ++report.ill_conditioned;
-            if (r.trouble == ImpulseTrouble::Degenerate) ++report.degenerate;
-            if (!r.impulse.allFinite()) {
-                ++report.nonfinite;
-                continue;
-            }
-            if (r.impulse.isZero(0.0)) continue;
-            a.applyImpulse(-r.impulse, m.centroid);
-            b.applyImpulse(r.impulse, m.centroid);
-            for (int body : {m.body_a, m.body_b})
-                if (!bodies[static_cast<std::size_t>(body)].infiniteMass()) report.impulsed[static_cast<std::size_t>(body)] = 1;
-            m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
-            any = true;
+    // One manifold's impulse, its troubles counted in `tally`; true if it applied one.
+    auto collide = [&](std::size_t k, CollisionTally& tally) {
+        ContactManifold& m = manifolds[k];
+        RigidBody& a = bodies[static_cast<std::size_t>(m.body_a)];
+        RigidBody& b = bodies[static_cast<std::size_t>(m.body_b)];
+        if (settings_.response == ResponseModel::NewtonCoulomb)
+            return manifoldCollision(a, b, m, resting[k] != 0, resting_speed, tick, report.impulsed, tally);
+        if (!(m.distance < scene_.collision_distance)) return false;   // speculative: not the 1995 model's
+        const Vec3 u = b.pointVelocity(m.centroid) - a.pointVelocity(m.centroid);
+        const double un = u.dot(m.normal);
+        if (!(un < 0.0)) return false;
+        // A resting contact's slow approach is stopped plastically (no micro-bounce); it must
+        // still be stopped now: the contact phase only fixes the end of the step. (Leaving it to
+        // the contact phase's block solve when the gap outlasts the tick holds pyramids a little
+        // stiller but lets tumbling boxes in bins dig in: 1.6-1.9x the penetration_recovered.)
+        const bool plastic = -un < settings_.restitution_threshold || (resting[k] != 0 && -un <= resting_speed);
+        const double e = plastic ? 0.0 : m.restitution;
+        const ImpulseResult r =
+            settings_.response == ResponseModel::Vroc1995
+                ? vroc1995Impulse(a, b, m.centroid, m.normal, e)
+                : newtonCoulombImpulse(a, b, m.centroid, m.normal, e, m.friction);
+        if (r.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
+        if (r.trouble == ImpulseTrouble::Degenerate) ++tally.degenerate;
+        if (!r.impulse.allFinite()) {
+            ++tally.nonfinite;
+            return false;
         }
-        if (!any) break;
+        if (r.impulse.isZero(0.0)) return false;
+        a.applyImpulse(-r.impulse, m.centroid);
+        b.applyImpulse(r.impulse, m.centroid);
+        for (int body : {m.body_a, m.body_b})
+            if (!bodies[static_cast<std::size_t>(body)].infiniteMass()) report.impulsed[static_cast<std::size_t>(body)] = 1;
+        m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
+        return true;
+    };
+    auto addTally = [&report](const CollisionTally& t) {
+        report.ill_conditioned += t.ill_conditioned;
+        report.degenerate += t.degenerate;
+        report.nonfinite += t.nonfinite;
+    };
+    const int sweeps = settings_.collision_iterations;
+    if (workers <= 1 || workers > kMaxCollisionTeam || manifolds.size() < kTeamManifolds) {
+        CollisionTally tally;
+        for (int sweep = 0; sweep < sweeps; ++sweep) {
+            bool any = false;
+            for (std::size_t k = 0; k < manifolds.size(); ++k) any = collide(k, tally) || any;
+            if (!any) break;
+        }
+        addTally(tally);
+        return;
     }
+    // A team: each wave's manifolds share no movable body, so the workers take contiguous shares
+    // of it and meet after it; every dependent pair keeps the one-worker order (impulse_waves.h).
+    scheduleImpulseWaves(manifolds, bodies, waves);
+    std::array<CollisionTally, kMaxCollisionTeam> tallies{};
+    // Whether a worker applied an impulse, per sweep parity: a worker clears its flag for sweep s
+    // only after every worker has read the flags of sweep s - 2 (a wave's barrier lies between).
+    std::array<std::array<std::uint8_t, kMaxCollisionTeam>, 2> applied{};
+    SpinBarrier barrier(workers);
+    const auto team = static_cast<std::size_t>(workers);
+    partition_->run(team, [&](std::size_t w, int) {
+        CollisionTally& tally = tallies[w];
+        for (int sweep = 0; sweep < sweeps; ++sweep) {
+            std::uint8_t& mine = applied[static_cast<std::size_t>(sweep % 2)][w];
+            mine = 0;
+            for (std::size_t wave = 0; wave < waves.waves(); ++wave) {
+                const std::size_t begin = waves.begin[wave], size = waves.begin[wave + 1] - begin;
+                for (std::size_t i = begin + size * w / team; i < begin + size * (w + 1) / team; ++i)
+                    if (collide(static_cast<std::size_t>(waves.order[i]), tally)) mine = 1;
+                barrier.arriveAndWait();
+            }
+            const auto& flags = applied[static_cast<std::size_t>(sweep % 2)];
+            if (std::none_of(flags.begin(), flags.begin() + workers, [](std::uint8_t f) { return f != 0; })) break;
+        }
+    });
+    for (std::size_t w = 0; w < team; ++w) addTally(tallies[w]);
 }
 
 bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
-                                   double tick, CollisionPhaseReport& report) const {
+                                   double tick, std::vector<std::uint8_t>& impulsed, CollisionTally& tally) const {
     // The points that touch now, and the speculative ones that reach the speculative target within
     // the tick at their approach speed: their impact is met now, up to a/|u| early (a the gap to
     // close), rather than leaving the contact phase to stop them (the drift moves a body with the
@@ -503,32 +542,32 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
     const std::span<const double> restitution(selected_restitution.data(), selected_restitution.size());
     if (points.size() == 1) {   // one point: the coupled sticking / sliding impulse there
         const ImpulseResult r = newtonCoulombImpulse(a, b, points[0], m.normal, restitution[0], m.friction);
-        if (r.trouble == ImpulseTrouble::IllConditioned) ++report.ill_conditioned;
-        if (r.trouble == ImpulseTrouble::Degenerate) ++report.degenerate;
+        if (r.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
+        if (r.trouble == ImpulseTrouble::Degenerate) ++tally.degenerate;
         if (!r.impulse.allFinite()) {
-            ++report.nonfinite;
+            ++tally.nonfinite;
             return false;
         }
         if (r.impulse.isZero(0.0)) return false;
         a.applyImpulse(-r.impulse, points[0]);
         b.applyImpulse(r.impulse, points[0]);
         for (RigidBody* body : {&a, &b})
-            if (!body->infiniteMass()) report.impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
+            if (!body->infiniteMass()) impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
         m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
         return true;
     }
     const PatchImpulse imp = patchImpulse(a, b, points, m.centroid, m.normal, restitution, m.friction);
-    if (imp.trouble == ImpulseTrouble::IllConditioned) ++report.ill_conditioned;
+    if (imp.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
     bool finite = imp.tangent.allFinite();
     for (double x : imp.normal) finite = finite && std::isfinite(x);
     if (!finite) {
-        ++report.nonfinite;
+        ++tally.nonfinite;
         return false;
     }
     if (!imp.any()) return false;
     applyPatchImpulse(a, b, points, m.centroid, m.normal, imp);
     for (RigidBody* body : {&a, &b})
-        if (!body->infiniteMass()) report.impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
+        if (!body->infiniteMass()) impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
     for (double x : imp.normal) m.collision_impulse += x;
     return true;
 }

@@ -205,16 +205,18 @@ private:
     /// local copies; manifolds index them); a `resting` one (held at its last solve) approaching
     /// slower than `resting_speed` [m/s] is stopped plastically (e = 0); `tick` [s] is the island's
     /// step (speculative points reached within it collide now). What it did goes to `report`
-    /// (reset first). Pure in its arguments, so islands run on any worker.
+    /// (reset first). Pure in its arguments, so islands run on any worker. With `workers` > 1 (a
+    /// large island solved alone) the pool's workers share each sweep wave by wave (`waves`, see
+    /// impulse_waves.h): the same bits as one worker's pass.
     void collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                         const std::vector<std::uint8_t>& resting, double resting_speed, double tick,
-                        CollisionPhaseReport& report) const;
+                        CollisionPhaseReport& report, int workers, ImpulseWaves& waves) const;
     /// The collision phase of one manifold (Newton-Coulomb): its touching points and the speculative
     /// ones reached within `tick` [s]; one point gets the coupled impulse of newton_coulomb.h, two or
     /// more Newton restitution per point with patch friction (patch_impulse.h). Applied to a and b;
-    /// true if an impulse was applied.
+    /// true if an impulse was applied; marks the movable ones in `impulsed`, troubles in `tally`.
     bool manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
-                        double tick, CollisionPhaseReport& report) const;
+                        double tick, std::vector<std::uint8_t>& impulsed, CollisionTally& tally) const;
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Counts a collision phase's troubles as warnings.
     void warnCollision(const CollisionPhaseReport& report);
