@@ -22,6 +22,25 @@ constexpr double kMatchFraction = 0.05;
 // A resting patch approaching slower than this fraction of g x tick is left to the contact phase.
 constexpr double kQuietApproach = 1e-6;
 
+// Applies a one-point impulse `r` at p to a and b (the bodies of m), counting its troubles in
+// `tally` and marking the movable ones in `impulsed`; true if it changed them.
+bool applyPointImpulse(const ImpulseResult& r, const Vec3& p, RigidBody& a, RigidBody& b, ContactManifold& m,
+                       std::vector<std::uint8_t>& impulsed, CollisionTally& tally) {
+    if (r.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
+    if (r.trouble == ImpulseTrouble::Degenerate) ++tally.degenerate;
+    if (!r.impulse.allFinite()) {
+        ++tally.nonfinite;
+        return false;
+    }
+    if (r.impulse.isZero(0.0)) return false;
+    a.applyImpulse(-r.impulse, p);
+    b.applyImpulse(r.impulse, p);
+    if (!a.infiniteMass()) impulsed[static_cast<std::size_t>(m.body_a)] = 1;
+    if (!b.infiniteMass()) impulsed[static_cast<std::size_t>(m.body_b)] = 1;
+    m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
+    return true;
+}
+
 }  // namespace
 
 double NativeBackend::gridTick(double t) const {
@@ -446,19 +465,7 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
             settings_.response == ResponseModel::Vroc1995
                 ? vroc1995Impulse(a, b, m.centroid, m.normal, e)
                 : newtonCoulombImpulse(a, b, m.centroid, m.normal, e, m.friction);
-        if (r.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
-        if (r.trouble == ImpulseTrouble::Degenerate) ++tally.degenerate;
-        if (!r.impulse.allFinite()) {
-            ++tally.nonfinite;
-            return false;
-        }
-        if (r.impulse.isZero(0.0)) return false;
-        a.applyImpulse(-r.impulse, m.centroid);
-        b.applyImpulse(r.impulse, m.centroid);
-        for (int body : {m.body_a, m.body_b})
-            if (!bodies[static_cast<std::size_t>(body)].infiniteMass()) report.impulsed[static_cast<std::size_t>(body)] = 1;
-        m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
-        return true;
+        return applyPointImpulse(r, m.centroid, a, b, m, report.impulsed, tally);
     };
     auto addTally = [&report](const CollisionTally& t) {
         report.ill_conditioned += t.ill_conditioned;
@@ -542,19 +549,7 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
     const std::span<const double> restitution(selected_restitution.data(), selected_restitution.size());
     if (points.size() == 1) {   // one point: the coupled sticking / sliding impulse there
         const ImpulseResult r = newtonCoulombImpulse(a, b, points[0], m.normal, restitution[0], m.friction);
-        if (r.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
-        if (r.trouble == ImpulseTrouble::Degenerate) ++tally.degenerate;
-        if (!r.impulse.allFinite()) {
-            ++tally.nonfinite;
-            return false;
-        }
-        if (r.impulse.isZero(0.0)) return false;
-        a.applyImpulse(-r.impulse, points[0]);
-        b.applyImpulse(r.impulse, points[0]);
-        for (RigidBody* body : {&a, &b})
-            if (!body->infiniteMass()) impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
-        m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
-        return true;
+        return applyPointImpulse(r, points[0], a, b, m, impulsed, tally);
     }
     const PatchImpulse imp = patchImpulse(a, b, points, m.centroid, m.normal, restitution, m.friction);
     if (imp.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
