@@ -33,10 +33,9 @@ Island randomIsland(std::mt19937_64& rng, int bodies, int fixed, int contacts) {
     }
     std::uniform_int_distribution<int> pick(0, bodies - 1);
     for (int k = 0; k < contacts; ++k) {
-        ContactManifold m;
+        ContactManifold& m = is.manifolds.emplace_back();
         m.body_a = pick(rng);
         do m.body_b = pick(rng); while (m.body_b == m.body_a);
-        is.manifolds.push_back(m);
     }
     return is;
 }
@@ -60,7 +59,9 @@ TEST(SchedulingImpulseWaves, WavesKeepTheSequentialOrderOfEveryDependentPair) {
                 ASSERT_LT(k, n);
                 ASSERT_EQ(wave[k], -1) << "contact " << k << " twice";
                 wave[k] = static_cast<int>(w);
-                if (i > waves.begin[w]) EXPECT_LT(waves.order[i - 1], waves.order[i]) << "a wave in contact order";
+                if (i > waves.begin[w]) {
+                    EXPECT_LT(waves.order[i - 1], waves.order[i]) << "a wave in contact order";
+                }
             }
         }
         auto movable = [&](int body) { return !is.bodies[static_cast<std::size_t>(body)].infiniteMass(); };
@@ -70,9 +71,10 @@ TEST(SchedulingImpulseWaves, WavesKeepTheSequentialOrderOfEveryDependentPair) {
                 bool shared = false;
                 for (int b : {x.body_a, x.body_b})
                     shared = shared || (movable(b) && (b == y.body_a || b == y.body_b));
-                if (shared)
+                if (shared) {
                     EXPECT_LT(wave[i], wave[j]) << "trial " << trial << ": contacts " << i << " and " << j
                                                 << " share a movable body";
+                }
             }
     }
 }
@@ -81,10 +83,9 @@ TEST(SchedulingImpulseWaves, ContactsOnlyThroughImmovableBodiesFormOneWave) {
     std::mt19937_64 rng(7);
     Island is = randomIsland(rng, 12, 2, 0);
     for (int b = 2; b < 12; ++b) {   // every movable body on the static and the tracked one
-        ContactManifold m;
+        ContactManifold& m = is.manifolds.emplace_back();
         m.body_a = b % 2;
         m.body_b = b;
-        is.manifolds.push_back(m);
     }
     ImpulseWaves waves;
     scheduleImpulseWaves(is.manifolds, is.bodies, waves);
