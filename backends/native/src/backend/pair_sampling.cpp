@@ -174,24 +174,28 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
     };
     for (std::size_t i = 0; i < sa.parts.size(); ++i) {
         const Pose pa = fa * sa.parts[i].local;
+        const Vec3 ca = compound ? fa.apply(sa.parts[i].bound_center) : Vec3::Zero();
         for (std::size_t j = 0; j < sb.parts.size(); ++j) {
-            const Pose pb = fb * sb.parts[j].local;
             const std::size_t part_pair = i * sb.parts.size() + j;
-            ManifoldAnchor& anchor = ps.anchors[part_pair];
             if (compound) {
-                const Vec3 ca = fa.apply(sa.parts[i].bound_center), cb = fb.apply(sb.parts[j].bound_center);
+                // Most part pairs of a compound are far apart (a box in a drum of 30 slabs): their
+                // test touches neither the part's pose nor its anchor unless it must.
+                const Vec3 cb = fb.apply(sb.parts[j].bound_center);
                 const double apart = (cb - ca).norm();
                 // The balls' gap, and each ball against the other part's own box (a box by a long slab).
                 double gap = apart - sa.parts[i].bound_radius - sb.parts[j].bound_radius;
                 if (!(gap > far_gap))
-                    gap = std::max({gap, sb.parts[j].gapToBall(pb, ca, sa.parts[i].bound_radius),
+                    gap = std::max({gap, sb.parts[j].gapToBall(fb * sb.parts[j].local, ca, sa.parts[i].bound_radius),
                                     sa.parts[i].gapToBall(pa, cb, sb.parts[j].bound_radius)});
                 if (gap > far_gap) {
                     addGap({gap, Vec3((cb - ca) / apart), true});
-                    anchor.valid = false;
+                    ManifoldAnchor& anchor = ps.anchors[part_pair];
+                    if (anchor.valid) anchor.valid = false;
                     continue;
                 }
             }
+            const Pose pb = fb * sb.parts[j].local;
+            ManifoldAnchor& anchor = ps.anchors[part_pair];
             // A touching part pair whose bodies barely moved relative to each other since its last
             // query keeps that manifold, carried along by the motion (manifold_anchor.h): a resting
             // pile's pairs are not walked and clipped again at every solve.

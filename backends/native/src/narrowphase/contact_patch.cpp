@@ -26,6 +26,7 @@ void planeBasis(const Vec3& n, Vec3& u, Vec3& w) {
 struct Scratch {
     std::vector<int> faces, edges;
     std::vector<Vec3> piece_a, piece_b;
+    std::vector<Vec3> normals_a, normals_b;   // world face normals of the two bodies
     std::vector<Eigen::Vector2d> a2, b2, out, clip_buffer, kept;
 };
 
@@ -130,17 +131,30 @@ void clipSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Poly2
     result.push_back(p + hi * (q - p));
 }
 
-/// [m] the height along n (from `mid`) of the piece `pts` (world) above the mid-plane point at 2D
-/// coordinates x: on the piece's plane for a face, along its line for an edge, its own for a point.
-double pieceHeight(const std::vector<Vec3>& pts, const Eigen::Vector2d& x, const Vec3& mid, const Vec3& u,
-                   const Vec3& w, const Vec3& n) {
+/// A piece's plane (Newell's normal, robust for any planar polygon), computed once per piece: a
+/// patch asks for the piece's height above a dozen or more points.
+struct PiecePlane {
+    Vec3 normal = Vec3::Zero();
+    double along = 0.0;     ///< normal . n
+    bool planar = false;    ///< a face not edge-on to n: heights come from its plane
+};
+
+PiecePlane piecePlane(const std::vector<Vec3>& pts, const Vec3& n) {
+    PiecePlane plane;
+    if (pts.size() < 3) return plane;
+    for (std::size_t k = 0; k < pts.size(); ++k) plane.normal += pts[k].cross(pts[(k + 1) % pts.size()]);
+    plane.along = plane.normal.dot(n);
+    plane.planar = std::abs(plane.along) > 1e-9 * plane.normal.norm();
+    return plane;
+}
+
+/// [m] the height along n (from `mid`) of the piece `pts` (world; its plane `plane`) above the
+/// mid-plane point at 2D coordinates x: on the piece's plane for a face, along its line for an
+/// edge, its own for a point.
+double pieceHeight(const std::vector<Vec3>& pts, const PiecePlane& plane, const Eigen::Vector2d& x, const Vec3& mid,
+                   const Vec3& u, const Vec3& w, const Vec3& n) {
     const Vec3 at = mid + x.x() * u + x.y() * w;
-    if (pts.size() >= 3) {
-        Vec3 normal = Vec3::Zero();   // Newell's method: robust for any planar polygon
-        for (std::size_t k = 0; k < pts.size(); ++k) normal += pts[k].cross(pts[(k + 1) % pts.size()]);
-        const double along = normal.dot(n);
-        if (std::abs(along) > 1e-9 * normal.norm()) return normal.dot(pts[0] - at) / along;
-    }
+    if (plane.planar) return plane.normal.dot(pts[0] - at) / plane.along;
     if (pts.size() >= 2) {
         const Vec3 d = pts[1] - pts[0];
         const Vec3 dp = d - d.dot(n) * n;   // the edge's direction in the plane
@@ -246,28 +260,40 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
         return true;
     };
     // A vertex on its body's far side (every face around it turned away from the other body) is not
-    // where the bodies would meet: the surface below it is.
-    auto facing = [](const ConvexMesh& m, const Pose& pose, int v, const Vec3& towards) {
+    // where the bodies would meet: the surface below it is. (Face normals turned to world once per
+    // body, `normals`: each face borders several vertices.)
+    auto facing = [](const ConvexMesh& m, const std::vector<Vec3>& normals, int v, const Vec3& towards) {
         const int first = m.vertexEdge(v);
         for (int h = first;;) {
-            if (pose.rotate(m.faceNormal(m.face(h))).dot(towards) >= -1e-9) return true;
+            if (normals[static_cast<std::size_t>(m.face(h))].dot(towards) >= -1e-9) return true;
             if ((h = m.nextAroundOrigin(h)) == first) return false;
         }
     };
+    auto worldNormals = [](const ConvexMesh& m, const Pose& pose, std::vector<Vec3>& normals) {
+        normals.clear();
+        for (int f = 0; f < m.faceCount(); ++f) normals.push_back(pose.rotate(m.faceNormal(f)));
+    };
+    std::vector<Vec3>& normals_a = scratch().normals_a;
+    std::vector<Vec3>& normals_b = scratch().normals_b;
+    worldNormals(a, pose_a, normals_a);
+    worldNormals(b, pose_b, normals_b);
+    const PiecePlane plane_a = piecePlane(pa, n), plane_b = piecePlane(pb, n);
     for (int v = 0; v < b.vertexCount(); ++v) {
-        if (!facing(b, pose_b, v, -n)) continue;
+        if (!facing(b, normals_b, v, -n)) continue;
         const Vec3 x = pose_b.apply(b.position(v));
         const double on_b = (x - mid).dot(n);
-        if (on_b - pieceHeight(pa, to2(x), mid, u, w, n) <= reach && inside(a2, to2(x))) candidates.push_back({to2(x), on_b, nan});
+        const Eigen::Vector2d x2 = to2(x);
+        if (on_b - pieceHeight(pa, plane_a, x2, mid, u, w, n) <= reach && inside(a2, x2)) candidates.push_back({x2, on_b, nan});
     }
     for (int v = 0; v < a.vertexCount(); ++v) {
-        if (!facing(a, pose_a, v, n)) continue;
+        if (!facing(a, normals_a, v, n)) continue;
         const Vec3 y = pose_a.apply(a.position(v));
         const double on_a = (y - mid).dot(n);
-        if (pieceHeight(pb, to2(y), mid, u, w, n) - on_a <= reach && inside(b2, to2(y))) candidates.push_back({to2(y), nan, on_a});
+        const Eigen::Vector2d y2 = to2(y);
+        if (pieceHeight(pb, plane_b, y2, mid, u, w, n) - on_a <= reach && inside(b2, y2)) candidates.push_back({y2, nan, on_a});
     }
-    const bool a_faces = pose_a.rotate(a.faceNormal(fa)).dot(n) > 1e-9;
-    const bool b_faces = pose_b.rotate(b.faceNormal(fb)).dot(n) < -1e-9;
+    const bool a_faces = normals_a[static_cast<std::size_t>(fa)].dot(n) > 1e-9;
+    const bool b_faces = normals_b[static_cast<std::size_t>(fb)].dot(n) < -1e-9;
     Vec3 touching_sum = Vec3::Zero();
     int touching = 0;
     const double merge2 = 1e-12 * (a2.empty() ? 1.0 : (a2[0].squaredNorm() + 1.0));
@@ -283,10 +309,10 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
         // vertex): where a face turns towards the other body, the body's surface there is the
         // face's plane (convexity); otherwise the faces' half-spaces decide.
         const double on_b = !std::isnan(c.on_b) ? c.on_b
-                            : b_faces        ? pieceHeight(pb, x, mid, u, w, n)
+                            : b_faces        ? pieceHeight(pb, plane_b, x, mid, u, w, n)
                                              : surfaceHeight(b, pose_b, x, mid, u, w, n, -1.0);
         const double on_a = !std::isnan(c.on_a) ? c.on_a
-                            : a_faces        ? pieceHeight(pa, x, mid, u, w, n)
+                            : a_faces        ? pieceHeight(pa, plane_a, x, mid, u, w, n)
                                              : surfaceHeight(a, pose_a, x, mid, u, w, n, 1.0);
         const double gap = on_b - on_a;
         if (!std::isfinite(gap) || !(gap <= reach)) continue;
@@ -385,6 +411,7 @@ void contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, 
         patch.centroid = mid;
         return;
     }
+    const PiecePlane plane_a = piecePlane(pa, n), plane_b = piecePlane(pb, n);
     double area = 0.0;
     Eigen::Vector2d c = Eigen::Vector2d::Zero(), mean = Eigen::Vector2d::Zero();
     for (size_t k = 0; k < out.size(); ++k) {
@@ -394,7 +421,8 @@ void contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, 
         mean += out[k];
         patch.points.push_back(to3(out[k]));
         if (reach > tolerance)   // only speculative contact reads the gaps
-            patch.gaps.push_back(pieceHeight(pb, out[k], mid, u, w, n) - pieceHeight(pa, out[k], mid, u, w, n));
+            patch.gaps.push_back(pieceHeight(pb, plane_b, out[k], mid, u, w, n) -
+                                 pieceHeight(pa, plane_a, out[k], mid, u, w, n));
     }
     mean /= static_cast<double>(out.size());
     // Area centroid for a polygon; the mean for a segment, a point or a degenerate sliver.
