@@ -63,6 +63,7 @@ struct IslandScratch {
     std::vector<int> more;                      // touching pairs of due islands still to sample
     std::vector<ContactManifold> manifolds;     // the step's manifolds
     std::vector<std::pair<int, int>> cache_of;  // (pair, part pair) per manifold
+    std::vector<Pose> frame_a;                  // per manifold: body A's scene frame at the step's time
     std::vector<std::uint8_t> resting;          // per manifold
     std::vector<IslandSolve> pool;              // this step's islands in [0, used)
     std::size_t used = 0;

@@ -41,6 +41,23 @@ bool applyPointImpulse(const ImpulseResult& r, const Vec3& p, RigidBody& a, Rigi
     return true;
 }
 
+// fn(m) for every m in [0, count), shared by the workers in runs of consecutive indices; fn must
+// touch nothing but what belongs to m (then the same bits for any worker count).
+template <class Fn>
+void forEachManifold(PairPartition& partition, std::size_t count, const Fn& fn) {
+    // Runs of kManifoldShare manifolds: a worker's share is worth the hand-over.
+    constexpr std::size_t kManifoldShare = 64;
+    const std::size_t shares = (count + kManifoldShare - 1) / kManifoldShare;
+    if (partition.workers() <= 1 || shares <= 1) {
+        for (std::size_t m = 0; m < count; ++m) fn(m);
+        return;
+    }
+    // Two references captured: std::function keeps them in place (no allocation per step).
+    partition.run(shares, [&fn, &count](std::size_t k, int) {
+        for (std::size_t m = k * kManifoldShare; m < std::min(count, (k + 1) * kManifoldShare); ++m) fn(m);
+    });
+}
+
 }  // namespace
 
 double NativeBackend::gridTick(double t) const {
@@ -135,22 +152,29 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     // step per sub-step, not one per island.
     std::vector<ContactManifold>& manifolds = sc.manifolds;
     std::vector<std::pair<int, int>>& cache_of = sc.cache_of;  // (pair, part pair) per manifold
+    std::vector<Pose>& frame_a = sc.frame_a;
     manifolds.clear();
     cache_of.clear();
+    frame_a.clear();
     for (const PairSample& s : samples) {
-        PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
         const Pose fa = bodies_[static_cast<std::size_t>(ps.a)].framePose();
-        const double radius = std::min(shapes_[static_cast<std::size_t>(ps.a)].outer_radius,
-                                       shapes_[static_cast<std::size_t>(ps.b)].outer_radius);
         for (std::size_t k = 0; k < s.manifolds.size(); ++k) {
-            ContactManifold m = s.manifolds[k];
-            if (settings_.warm_start)
-                warmStartManifold(ps.manifolds[static_cast<std::size_t>(s.manifold_part[k])], fa, h,
-                                  kMatchFraction * radius, m);
-            manifolds.push_back(std::move(m));
+            manifolds.push_back(s.manifolds[k]);
             cache_of.emplace_back(s.pair, s.manifold_part[k]);
+            frame_a.push_back(fa);
         }
     }
+    // Each manifold reads its own cache only: the workers share them out, the same bits.
+    if (settings_.warm_start)
+        forEachManifold(*partition_, manifolds.size(), [&](std::size_t m) {
+            const auto [pair, part] = cache_of[m];
+            const PairState& ps = pairs_[static_cast<std::size_t>(pair)];
+            const double radius = std::min(shapes_[static_cast<std::size_t>(ps.a)].outer_radius,
+                                           shapes_[static_cast<std::size_t>(ps.b)].outer_radius);
+            warmStartManifold(ps.manifolds[static_cast<std::size_t>(part)], frame_a[m], h, kMatchFraction * radius,
+                              manifolds[m]);
+        });
     stats_.contacts += static_cast<std::int64_t>(manifolds.size());
     for (const ContactManifold& m : manifolds)
         stats_.speculative_points += std::count_if(m.point_gap.begin(), m.point_gap.end(), [cd](double g) { return !(g < cd); });
@@ -321,9 +345,6 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
             out.point_impulse = lm.point_impulse;
             out.tangent_impulse = lm.tangent_impulse;
             out.torsion_impulse = lm.torsion_impulse;
-            const auto [pair, part] = cache_of[static_cast<std::size_t>(m)];
-            PairState& ps = pairs_[static_cast<std::size_t>(pair)];
-            storeManifold(ps.manifolds[static_cast<std::size_t>(part)], bodies_[static_cast<std::size_t>(ps.a)].framePose(), h, out);
         }
         for (std::size_t k = 0; k < is->bodies.size(); ++k) {
             const int body = is->bodies[k];
@@ -348,6 +369,13 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         }
         if (!local) maybeSleep(is->bodies, t);   // a local solve saw part of the island
     }
+    // Manifolds go back to their caches, each to its own (body A's frame as at the warm start: no
+    // impulse moves a body, and the drifts' position corrections come after).
+    forEachManifold(*partition_, manifolds.size(), [&](std::size_t m) {
+        const auto [pair, part] = cache_of[m];
+        storeManifold(pairs_[static_cast<std::size_t>(pair)].manifolds[static_cast<std::size_t>(part)], frame_a[m], h,
+                      manifolds[m]);
+    });
     // Per-sample totals for the events.
     {
         std::size_t m = 0;
