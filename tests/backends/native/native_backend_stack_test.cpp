@@ -84,9 +84,11 @@ TEST(NativeStack, StackBesideALedgeStandsWithLevelsThatFollowGravity) {
         NativeSettings settings;
         settings.touching = touching;
         EXPECT_LE(stackMotion(s, settings, 3.0), 1e-4) << "regime " << static_cast<int>(touching);
-        // The old rule is what this guards against: with it the stack falls.
+        // The old rule is what this guards against: with it the stack sinks. (It fell 0.2-0.5 m
+        // while penetration depths came from MPR; with exact depths (sat_penetration.h) it sinks
+        // 2-6 mm in 3 s, still 10x the tolerance above.)
         settings.shock_support = -1.0;
-        EXPECT_GE(stackMotion(s, settings, 3.0), 0.05) << "regime " << static_cast<int>(touching) << ", levels from the ledge";
+        EXPECT_GE(stackMotion(s, settings, 3.0), 1e-3) << "regime " << static_cast<int>(touching) << ", levels from the ledge";
     }
 }
 

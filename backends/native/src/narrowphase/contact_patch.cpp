@@ -189,16 +189,19 @@ double surfaceHeight(const ConvexMesh& m, const Pose& pose, const Eigen::Vector2
     return side > 0.0 ? hi : lo;
 }
 
-/// The face of the feature (or around it) whose world normal is most aligned with `dir`.
-int alignedFace(const ConvexMesh& m, const Pose& pose, Feature f, const Vec3& dir) {
-    if (f.type == FeatureType::Face) return f.index;
+/// The face of the feature (or around it) whose world normal (`normals`, per face) is most aligned
+/// with `dir`; of all the body's faces if `any_face`.
+int alignedFace(const ConvexMesh& m, const std::vector<Vec3>& normals, Feature f, const Vec3& dir, bool any_face) {
     std::vector<int>& faces = scratch().faces;
     faces.clear();
-    if (f.type == FeatureType::Edge) {
+    if (any_face) {
+        for (int g = 0; g < m.faceCount(); ++g) faces.push_back(g);
+    } else if (f.type == FeatureType::Face) {
+        return f.index;
+    } else if (f.type == FeatureType::Edge) {
         faces.push_back(m.face(f.index));
         faces.push_back(m.face(f.index ^ 1));
-    }
-    if (f.type == FeatureType::Vertex) {
+    } else if (f.type == FeatureType::Vertex) {
         const int first = m.vertexEdge(f.index);
         for (int h = first;;) {
             faces.push_back(m.face(h));
@@ -208,7 +211,7 @@ int alignedFace(const ConvexMesh& m, const Pose& pose, Feature f, const Vec3& di
     int best = -1;
     double best_dot = -2.0;
     for (int g : faces) {
-        const double d = pose.rotate(m.faceNormal(g)).dot(dir);
+        const double d = normals[static_cast<std::size_t>(g)].dot(dir);
         if (d > best_dot) {
             best_dot = d;
             best = g;
@@ -217,15 +220,18 @@ int alignedFace(const ConvexMesh& m, const Pose& pose, Feature f, const Vec3& di
     return best;
 }
 
-/// Reference and incident faces clipped, points kept within `reach` (see contactPatch), into the
-/// empty `patch`; left empty when nothing touches.
-void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
-                      const FeatureCache& cache, const ProximityResult& result, double tolerance, double reach,
-                      ContactPatch& patch) {
+/// The world normals of m's faces at `pose`, into `normals`.
+void worldNormals(const ConvexMesh& m, const Pose& pose, std::vector<Vec3>& normals) {
+    normals.clear();
+    for (int f = 0; f < m.faceCount(); ++f) normals.push_back(pose.rotate(m.faceNormal(f)));
+}
+
+/// Faces fa of A and fb of B (world normals `normals_a`, `normals_b`) clipped, points kept within
+/// `reach` (see contactPatch), into the empty `patch`; left empty when nothing touches.
+void clipFaces(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+               const std::vector<Vec3>& normals_a, const std::vector<Vec3>& normals_b, int fa, int fb,
+               const ProximityResult& result, double tolerance, double reach, ContactPatch& patch) {
     const Vec3 n = result.normal;
-    const int fa = alignedFace(a, pose_a, cache.a, n);
-    const int fb = alignedFace(b, pose_b, cache.b, -n);
-    if (fa < 0 || fb < 0) return;
     std::vector<Vec3>& pa = scratch().piece_a;
     std::vector<Vec3>& pb = scratch().piece_b;
     faceWorld(a, pose_a, fa, pa);
@@ -260,8 +266,7 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
         return true;
     };
     // A vertex on its body's far side (every face around it turned away from the other body) is not
-    // where the bodies would meet: the surface below it is. (Face normals turned to world once per
-    // body, `normals`: each face borders several vertices.)
+    // where the bodies would meet: the surface below it is.
     auto facing = [](const ConvexMesh& m, const std::vector<Vec3>& normals, int v, const Vec3& towards) {
         const int first = m.vertexEdge(v);
         for (int h = first;;) {
@@ -269,14 +274,6 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
             if ((h = m.nextAroundOrigin(h)) == first) return false;
         }
     };
-    auto worldNormals = [](const ConvexMesh& m, const Pose& pose, std::vector<Vec3>& normals) {
-        normals.clear();
-        for (int f = 0; f < m.faceCount(); ++f) normals.push_back(pose.rotate(m.faceNormal(f)));
-    };
-    std::vector<Vec3>& normals_a = scratch().normals_a;
-    std::vector<Vec3>& normals_b = scratch().normals_b;
-    worldNormals(a, pose_a, normals_a);
-    worldNormals(b, pose_b, normals_b);
     const PiecePlane plane_a = piecePlane(pa, n), plane_b = piecePlane(pb, n);
     for (int v = 0; v < b.vertexCount(); ++v) {
         if (!facing(b, normals_b, v, -n)) continue;
@@ -349,6 +346,28 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
         return;
     }
     patch.centroid = touching_sum / touching;
+}
+
+/// Reference and incident faces clipped, points kept within `reach` (see contactPatch), into the
+/// empty `patch`; left empty when nothing touches.
+void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+                      const FeatureCache& cache, const ProximityResult& result, double tolerance, double reach,
+                      ContactPatch& patch) {
+    const Vec3 n = result.normal;
+    // Face normals turned to world once per body: a face borders several vertices.
+    std::vector<Vec3>& normals_a = scratch().normals_a;
+    std::vector<Vec3>& normals_b = scratch().normals_b;
+    worldNormals(a, pose_a, normals_a);
+    worldNormals(b, pose_b, normals_b);
+    // Penetrating, the normal is the depth query's (MPR), not the walk's: the features the walk
+    // stopped at need not border the faces that meet along it. (In a turning drum, two boxes 15 mm
+    // into each other face to face kept a cached face at right angles to the normal: their faces
+    // did not overlap, the patch was the one deepest point, and they sank for a third of a second.)
+    // The faces that meet are then the two most aligned with the normal of all.
+    const int fa = alignedFace(a, normals_a, cache.a, n, result.penetrating);
+    const int fb = alignedFace(b, normals_b, cache.b, -n, result.penetrating);
+    if (fa < 0 || fb < 0) return;
+    clipFaces(a, pose_a, b, pose_b, normals_a, normals_b, fa, fb, result, tolerance, reach, patch);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The queries of proximity.h: the V-Clip walk in A's frame, MPR for penetration depth, results
-// moved to world coordinates.
+// The queries of proximity.h: the V-Clip walk in A's frame, the separating axis test (MPR for
+// large meshes) for penetration depth, results moved to world coordinates.
 #include "narrowphase/proximity.h"
 
 #include <limits>
@@ -8,6 +8,7 @@
 
 #include "geometry/convex_mesh.h"
 #include "narrowphase/mpr_penetration.h"
+#include "narrowphase/sat_penetration.h"
 #include "narrowphase/point_mesh_walk.h"
 #include "narrowphase/vclip_walk.h"
 
@@ -117,13 +118,26 @@ ProximityResult penetrationResult(const ConvexMesh& a, const Pose& pose_a, const
     ProximityResult r;
     if (touchingResult(a, pose_a, b, pose_b, near, r)) return r;
     r.penetrating = true;
-    const MprResult m = mprPenetration(a, pose_a, b, pose_b, vertexOf(a, near.a), vertexOf(b, near.b));
-    if (m.intersecting) {
-        r.distance = -m.depth;
-        r.normal = m.direction;
-        r.point_a = m.position + 0.5 * m.depth * m.direction;
-        r.point_b = m.position - 0.5 * m.depth * m.direction;
-    } else {   // exactly touching: the walk saw zero distance, MPR sees no overlap
+    // Exact (the separating axis test) where its edge loop is affordable, else MPR's estimate.
+    bool overlap = false;
+    if (satAffordable(a, b)) {
+        const SatPenetration m = satPenetration(a, pose_a, b, pose_b);
+        if ((overlap = m.depth > 0.0)) {
+            r.distance = -m.depth;
+            r.normal = m.normal;
+            r.point_a = m.point_a;
+            r.point_b = m.point_b;
+        }
+    } else {
+        const MprResult m = mprPenetration(a, pose_a, b, pose_b, vertexOf(a, near.a), vertexOf(b, near.b));
+        if ((overlap = m.intersecting)) {
+            r.distance = -m.depth;
+            r.normal = m.direction;
+            r.point_a = m.position + 0.5 * m.depth * m.direction;
+            r.point_b = m.position - 0.5 * m.depth * m.direction;
+        }
+    }
+    if (!overlap) {   // exactly touching: the walk saw zero distance, the depth query no overlap
         r.distance = 0.0;
         r.normal = centroidDirection(a, pose_a, b, pose_b);
         r.point_a = r.point_b = pose_a.apply(a.position(a.supportVertex(pose_a.orientation.conjugate() * r.normal)));
