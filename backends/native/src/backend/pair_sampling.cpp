@@ -179,7 +179,7 @@ NativeBackend::PairSample NativeBackend::samplePair(int pair_index) {
             const std::size_t part_pair = i * sb.parts.size() + j;
             if (compound) {
                 // Most part pairs of a compound are far apart (a box in a drum of 30 slabs): their
-                // test touches neither the part's pose nor its anchor unless it must.
+                // test composes no part pose, and writes the anchor only if it was valid.
                 const Vec3 cb = fb.apply(sb.parts[j].bound_center);
                 const double apart = (cb - ca).norm();
                 // The balls' gap, and each ball against the other part's own box (a box by a long slab).

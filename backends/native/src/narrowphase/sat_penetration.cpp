@@ -6,10 +6,12 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/closest_points.h"
+
 namespace vroc::native {
 namespace {
 
-// Everything is computed in A's frame: B's vertices, face normals and edge directions turned once.
+// Everything is computed in A's frame: B's vertices and face normals turned once.
 struct Scratch {
     std::vector<Vec3> vertices_b, normals_b;
 };
@@ -25,18 +27,6 @@ bool minkowskiFace(const Vec3& a1, const Vec3& a2, const Vec3& c1, const Vec3& c
     const Vec3 a_arc = a2.cross(a1), c_arc = c2.cross(c1);
     const double c1a = c1.dot(a_arc), c2a = c2.dot(a_arc), a1c = a1.dot(c_arc), a2c = a2.dot(c_arc);
     return c1a * c2a < 0.0 && a1c * a2c < 0.0 && c1a * a2c > 0.0;
-}
-
-/// Closest points of segments [p, p + d] and [q, q + e] (d, e not parallel), into x and y.
-void closestOnSegments(const Vec3& p, const Vec3& d, const Vec3& q, const Vec3& e, Vec3& x, Vec3& y) {
-    const Vec3 r = p - q;
-    const double dd = d.dot(d), ee = e.dot(e), de = d.dot(e), dr = d.dot(r), er = e.dot(r);
-    const double den = dd * ee - de * de;
-    double s = den > 0.0 ? std::clamp((de * er - ee * dr) / den, 0.0, 1.0) : 0.0;
-    double t = std::clamp((de * s + er) / ee, 0.0, 1.0);
-    s = std::clamp((de * t - dr) / dd, 0.0, 1.0);
-    x = p + s * d;
-    y = q + t * e;
 }
 
 }  // namespace
@@ -129,11 +119,13 @@ SatPenetration satPenetration(const ConvexMesh& a, const Pose& pose_a, const Con
         r.axis = SatAxis::EdgeEdge;
         r.feature_a = edge_a / 2;
         r.feature_b = edge_b / 2;
-        const Vec3& pa = a.position(a.origin(edge_a));
-        const Vec3 da = a.position(a.destination(edge_a)) - pa;
-        const Vec3& pb = vb[static_cast<std::size_t>(b.origin(edge_b))];
-        const Vec3 db = vb[static_cast<std::size_t>(b.destination(edge_b))] - pb;
-        closestOnSegments(pa, da, pb, db, point_a, point_b);
+        const Vec3& pa0 = a.position(a.origin(edge_a));
+        const Vec3& pa1 = a.position(a.destination(edge_a));
+        const Vec3& pb0 = vb[static_cast<std::size_t>(b.origin(edge_b))];
+        const Vec3& pb1 = vb[static_cast<std::size_t>(b.destination(edge_b))];
+        const SegmentParams st = closestSegmentSegment(pa0, pa1, pb0, pb1);
+        point_a = pa0 + st.s * (pa1 - pa0);
+        point_b = pb0 + st.t * (pb1 - pb0);
     } else if (r.axis == SatAxis::FaceA) {
         point_b = vb[static_cast<std::size_t>(vertex_b)];
         point_a = point_b + best * n_best;
