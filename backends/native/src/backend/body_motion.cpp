@@ -17,12 +17,28 @@
 namespace vroc::native {
 
 void NativeBackend::syncBody(int body, double t) {
+    if (!advanceBody(body, t)) restNonFinite(body);
+}
+
+void NativeBackend::syncAllBodies(double t) {
+    // Every body on its own: the workers share them out, and a body whose state went non-finite
+    // is put to rest (with its warning) after, in body order.
+    constexpr std::size_t kBodyShare = 64;
+    sync_failed_.assign(bodies_.size(), 0);
+    partition_->forEachShared(bodies_.size(), kBodyShare, [this, t](std::size_t i) {
+        if (!advanceBody(static_cast<int>(i), t)) sync_failed_[i] = 1;
+    });
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (sync_failed_[i] != 0) restNonFinite(static_cast<int>(i));
+}
+
+bool NativeBackend::advanceBody(int body, double t) {
     const std::size_t i = static_cast<std::size_t>(body);
-    if (!(valid_at_[i] < t)) return;
+    if (!(valid_at_[i] < t)) return true;
     double from = valid_at_[i];
     valid_at_[i] = t;
     RigidBody& rb = bodies_[i];
-    if (rb.is_static || asleep_[i] != 0) return;
+    if (rb.is_static || asleep_[i] != 0) return true;
     const RigidBody saved = rb;
     if (drift_until_[i] > from) {
         const double tau = std::min(t, drift_until_[i]) - from;
@@ -53,7 +69,9 @@ void NativeBackend::syncBody(int body, double t) {
         advanceBallistic(rb, t - from, scene_.gravity);
         advanceTorqueFree(rb, t - from);
     }
-    recoverIfNonFinite(body, saved);
+    if (finiteState(rb)) return true;
+    rb = saved;
+    return false;
 }
 
 MotionBound NativeBackend::ballisticBound(int body) const {

@@ -138,7 +138,7 @@ void NativeBackend::fixedTick(double t) {
         recycleSamples(resampled);
     }
     changed_.clear();
-    for (std::size_t i = 0; i < bodies_.size(); ++i) syncBody(static_cast<int>(i), frame_end_);
+    syncAllBodies(frame_end_);
 }
 
 void NativeBackend::impactPass(std::vector<PairSample>& samples, double t) {

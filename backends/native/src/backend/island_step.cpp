@@ -41,22 +41,8 @@ bool applyPointImpulse(const ImpulseResult& r, const Vec3& p, RigidBody& a, Rigi
     return true;
 }
 
-// fn(m) for every m in [0, count), shared by the workers in runs of consecutive indices; fn must
-// touch nothing but what belongs to m (then the same bits for any worker count).
-template <class Fn>
-void forEachManifold(PairPartition& partition, std::size_t count, const Fn& fn) {
-    // Runs of kManifoldShare manifolds: a worker's share is worth the hand-over.
-    constexpr std::size_t kManifoldShare = 64;
-    const std::size_t shares = (count + kManifoldShare - 1) / kManifoldShare;
-    if (partition.workers() <= 1 || shares <= 1) {
-        for (std::size_t m = 0; m < count; ++m) fn(m);
-        return;
-    }
-    // Two references captured: std::function keeps them in place (no allocation per step).
-    partition.run(shares, [&fn, &count](std::size_t k, int) {
-        for (std::size_t m = k * kManifoldShare; m < std::min(count, (k + 1) * kManifoldShare); ++m) fn(m);
-    });
-}
+// Runs of manifolds a worker takes at a time (PairPartition::forEachShared).
+constexpr std::size_t kManifoldShare = 64;
 
 }  // namespace
 
@@ -167,7 +153,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
     // Each manifold reads its own cache only: the workers share them out, the same bits.
     if (settings_.warm_start)
-        forEachManifold(*partition_, manifolds.size(), [&](std::size_t m) {
+        partition_->forEachShared(manifolds.size(), kManifoldShare, [&](std::size_t m) {
             const auto [pair, part] = cache_of[m];
             const PairState& ps = pairs_[static_cast<std::size_t>(pair)];
             const double radius = std::min(shapes_[static_cast<std::size_t>(ps.a)].outer_radius,
@@ -371,7 +357,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
     // Manifolds go back to their caches, each to its own (body A's frame as at the warm start: no
     // impulse moves a body, and the drifts' position corrections come after).
-    forEachManifold(*partition_, manifolds.size(), [&](std::size_t m) {
+    partition_->forEachShared(manifolds.size(), kManifoldShare, [&](std::size_t m) {
         const auto [pair, part] = cache_of[m];
         storeManifold(pairs_[static_cast<std::size_t>(pair)].manifolds[static_cast<std::size_t>(part)], frame_a[m], h,
                       manifolds[m]);

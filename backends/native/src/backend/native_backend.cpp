@@ -130,7 +130,7 @@ void NativeBackend::stepFrame(double dt) {
         t = (h >= frame_end_ - t) ? frame_end_ : t + h;
     }
     time_ = frame_end_;
-    for (std::size_t i = 0; i < bodies_.size(); ++i) syncBody(static_cast<int>(i), time_);
+    syncAllBodies(time_);
     ++stats_.frames;
     stats_.internal_steps += steps;
     stats_.max_internal_steps_per_frame = std::max(stats_.max_internal_steps_per_frame, steps);
@@ -206,13 +206,21 @@ double NativeBackend::nextTick() {
     return next_tick_;
 }
 
+bool NativeBackend::finiteState(const RigidBody& rb) {
+    return rb.com.allFinite() && rb.velocity.allFinite() && rb.angular_momentum.allFinite() &&
+           rb.orientation.coeffs().allFinite();
+}
+
 void NativeBackend::recoverIfNonFinite(int body, const RigidBody& saved) {
     RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
-    if (rb.com.allFinite() && rb.velocity.allFinite() && rb.angular_momentum.allFinite() &&
-        rb.orientation.coeffs().allFinite())
-        return;
-    warn("nonfinite_state");
+    if (finiteState(rb)) return;
     rb = saved;
+    restNonFinite(body);
+}
+
+void NativeBackend::restNonFinite(int body) {
+    RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
+    warn("nonfinite_state");
     rb.velocity.setZero();
     rb.angular_momentum.setZero();
     rb.refreshEnergy();

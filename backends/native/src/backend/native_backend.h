@@ -231,6 +231,10 @@ private:
     /// then exact free flight. A drift interrupted early (its island solved again) leaves the body
     /// with the velocity of that instant, not of the tick end.
     void syncBody(int body, double t);
+    /// syncBody for every body, the workers sharing them (the same bits for any worker count).
+    void syncAllBodies(double t);
+    /// syncBody's motion; false (the body put back as it was) if its state went non-finite.
+    bool advanceBody(int body, double t);
     /// Motion of the body from valid_at_ on, and the time [s] until which it holds.
     MotionBound motionBound(int body, double& valid_until) const;
     MotionBound ballisticBound(int body) const;
@@ -272,6 +276,9 @@ private:
     void checkBody(int body, const char* call) const;
     /// A body whose state went non-finite is put back to `saved`, at rest, and a warning counted.
     void recoverIfNonFinite(int body, const RigidBody& saved);
+    /// The body (put back to a finite state) stopped, its drift ended, a warning counted.
+    void restNonFinite(int body);
+    static bool finiteState(const RigidBody& rb);
 
     Scene scene_;
     NativeSettings settings_;
@@ -304,6 +311,8 @@ private:
     std::vector<double> still_since_;       // [s] per body: since when it has been still
     std::vector<int> changed_;              // bodies whose version was bumped since last drained
     std::vector<int> candidates_;           // pairs_ indices of the current broad-phase pairs, in (a, b) order
+    std::vector<int> candidates_merge_;     // updateBroadPhase's buffer, swapped with candidates_
+    std::vector<std::uint8_t> sync_failed_; // syncAllBodies: per body, its state went non-finite
     // Per-step buffers, emptied and refilled at every internal step: no allocation once warm.
     std::vector<int> step_due_, step_entered_, step_again_;
     std::vector<PairSample> step_samples_, step_resampled_, step_extra_;

@@ -95,12 +95,14 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
         assert(it != list.end() && *it == idx);   // every listed pair is in its lists
         list.erase(it);
     };
+    // candidates_ gets the added pairs by one merge (they come in (a, b) order) and loses the
+    // removed ones by one pass: a many-pair list is walked once, not shifted once per pair.
+    const std::size_t entered_before = entered.size();
     for (const BodyPair& bp : broad_phase_.added()) {
         PairState& ps = pairState(bp.a, bp.b);
         const int idx = static_cast<int>(&ps - pairs_.data());
         ps.in_broad_phase = true;
         entered.push_back(idx);
-        insertOrdered(candidates_, idx);
         insertOrdered(body_pairs_[static_cast<std::size_t>(bp.a)], idx);
         insertOrdered(body_pairs_[static_cast<std::size_t>(bp.b)], idx);
     }
@@ -116,9 +118,17 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
         }
         for (PersistentManifold& m : ps.manifolds) m.clear();
         for (ManifoldAnchor& m : ps.anchors) m.valid = false;
-        eraseOrdered(candidates_, idx);
         eraseOrdered(body_pairs_[static_cast<std::size_t>(bp.a)], idx);
         eraseOrdered(body_pairs_[static_cast<std::size_t>(bp.b)], idx);
+    }
+    if (!broad_phase_.removed().empty())
+        std::erase_if(candidates_, [this](int idx) { return !pairs_[static_cast<std::size_t>(idx)].in_broad_phase; });
+    if (entered.size() > entered_before) {
+        std::vector<int>& merged = candidates_merge_;
+        merged.clear();
+        std::merge(candidates_.begin(), candidates_.end(), entered.begin() + static_cast<std::ptrdiff_t>(entered_before), entered.end(),
+                   std::back_inserter(merged), [&keyOf](int x, int y) { return keyOf(x) < keyOf(y); });
+        candidates_.swap(merged);
     }
 }
 

@@ -54,6 +54,23 @@ public:
         return merged;
     }
 
+    /// fn(i) for every i in [0, count), shared by the workers in runs of `share` consecutive
+    /// indices (a run is worth the hand-over); serially if one worker or one run. fn must touch
+    /// nothing but what belongs to i: then the same bits for any worker count.
+    template <class Fn>
+    void forEachShared(std::size_t count, std::size_t share, const Fn& fn) {
+        const std::size_t shares = (count + share - 1) / share;
+        if (workers_ <= 1 || shares <= 1) {
+            for (std::size_t i = 0; i < count; ++i) fn(i);
+            return;
+        }
+        // Two references captured: std::function keeps them in place (no allocation per call).
+        const std::size_t range[2] = {count, share};
+        run(shares, [&fn, &range](std::size_t k, int) {
+            for (std::size_t i = k * range[1]; i < std::min(range[0], (k + 1) * range[1]); ++i) fn(i);
+        });
+    }
+
 private:
     struct Pool;
     int workers_ = 1;

@@ -66,7 +66,9 @@ void SweepAndPrune::setAabb(int body, const Aabb& box) {
         if (lo > hi) { std::swap(lo, hi); bad = true; }   // inverted: keep the sort consistent
     }
     if (bad) ++stats_.invalid_boxes;
-    boxes_[body] = clean;
+    Aabb& kept = boxes_[body];
+    if (kept.lower != clean.lower || kept.upper != clean.upper) boxes_changed_ = true;
+    kept = clean;
 }
 
 bool SweepAndPrune::pairAllowed(int x, int y) const {
@@ -171,6 +173,13 @@ void SweepAndPrune::update() {
     last_added_.clear();
     last_removed_.swap(removed_with_bodies_);
     removed_with_bodies_.clear();
+    // The same boxes as at the last update: the sorted axes and the pair set stand as they are
+    // (a frame of one fixed tick sweeps the boxes of the frame, then of its tick: the same).
+    if (!boxes_changed_ && pending_new_ == 0) {
+        sortUnique(last_removed_);
+        return;
+    }
+    boxes_changed_ = false;
     writeValues();
     if (pending_new_ > 64 && 8 * pending_new_ > bodyCount()) {
         rebuild();

@@ -44,7 +44,8 @@ public:
     /// New box for the body [m, world], used by the next update(). NaN bounds become ±inf
     /// (the body then overlaps everything: conservative), inverted bounds are swapped; both counted.
     void setAabb(int body, const Aabb& box);
-    /// Re-sorts the three axes and updates the overlapping pair set.
+    /// Re-sorts the three axes and updates the overlapping pair set (nothing to do, and nothing
+    /// done, if no box changed and no body came since the last update).
     void update();
 
     /// Overlapping pairs (not both of infinite mass: static or tracked), sorted by (a, b).
@@ -88,6 +89,7 @@ private:
     std::vector<BodyPair> last_added_, last_removed_;   // what the last update() changed
     std::vector<BodyPair> removed_with_bodies_;          // removeBody() since the last update()
     int pending_new_ = 0;             // bodies added since the last update()
+    bool boxes_changed_ = false;      // a setAabb() since the last update() changed a box
     SweepAndPruneStats stats_;
 };
 
