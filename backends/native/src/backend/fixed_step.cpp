@@ -17,6 +17,8 @@ namespace {
 // Passes per tick that sample again the pairs of bodies an impact set moving (fixedTick): a blow
 // runs one more pair down a row per pass (a ball into a base-12 pyramid's row of eleven boxes).
 constexpr int kImpactPasses = 16;
+// Runs of candidate pairs a worker takes at a time when they are looked over (fixedTick).
+constexpr std::size_t kPairShare = 256;
 
 }  // namespace
 
@@ -79,17 +81,25 @@ void NativeBackend::fixedTick(double t) {
         return bodies_[static_cast<std::size_t>(body)].is_kinematic && !infinite_mass_[static_cast<std::size_t>(other)];
     };
     if (settings_.pair_bounds) lowerGapBounds();
+    // Each candidate's verdict on its own (the workers share them out), then the due list in
+    // candidate order.
+    constexpr std::uint8_t kSkip = 0, kBounded = 1, kDue = 2;
+    std::vector<std::uint8_t>& verdict = step_verdict_;
+    verdict.resize(candidates_.size());
+    partition_->forEachShared(candidates_.size(), kPairShare, [&](std::size_t k) {
+        const PairState& ps = pairs_[static_cast<std::size_t>(candidates_[k])];
+        std::uint8_t v = kDue;
+        if (!(awake(ps.a) || awake(ps.b) || pushes(ps.a, ps.b) || pushes(ps.b, ps.a)))
+            v = kSkip;
+        else if (settings_.pair_bounds && boundedApart(ps))
+            v = kBounded;   // its query would find it beyond its reach: no manifold, as if sampled
+        verdict[k] = v;
+    });
     std::vector<int>& due = step_due_;
     due.clear();
-    for (int p : candidates_) {
-        const PairState& ps = pairs_[static_cast<std::size_t>(p)];
-        if (!(awake(ps.a) || awake(ps.b) || pushes(ps.a, ps.b) || pushes(ps.b, ps.a))) continue;
-        // Its query would find it beyond its reach: no manifold, as if sampled (same results).
-        if (settings_.pair_bounds && boundedApart(ps)) {
-            ++stats_.bounded_pairs;
-            continue;
-        }
-        due.push_back(p);
+    for (std::size_t k = 0; k < candidates_.size(); ++k) {
+        if (verdict[k] == kBounded) ++stats_.bounded_pairs;
+        if (verdict[k] == kDue) due.push_back(candidates_[k]);
     }
     stats_.flight_pair_queries += static_cast<std::int64_t>(due.size());
     std::vector<PairSample>& samples = step_samples_;
@@ -194,7 +204,8 @@ void NativeBackend::lowerGapBounds() {
     if (first) tick_start_pose_.resize(bodies_.size());
     std::vector<double>& moved = step_moved_;
     moved.assign(bodies_.size(), 0.0);
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    // Every body, then every pair, on its own: the workers share them out.
+    partition_->forEachShared(bodies_.size(), kPairShare, [&](std::size_t i) {
         const Pose now{bodies_[i].com, bodies_[i].orientation};   // every surface point within R of the COM
         if (!first) {
             const Pose& was = tick_start_pose_[i];
@@ -203,15 +214,16 @@ void NativeBackend::lowerGapBounds() {
             moved[i] = (now.position - was.position).norm() + 2.0 * sin_half * shapes_[i].outer_radius;
         }
         tick_start_pose_[i] = now;
-    }
-    for (int p : candidates_) {
-        PairState& ps = pairs_[static_cast<std::size_t>(p)];
+    });
+    if (first) return;
+    partition_->forEachShared(candidates_.size(), kPairShare, [&](std::size_t k) {
+        PairState& ps = pairs_[static_cast<std::size_t>(candidates_[k])];
         // No bound from the last tick (never queried, or out of the broad phase at some tick since:
         // its bound missed that tick's motion): it stays unbounded until its next query.
-        if (first || ps.gap_step != step_index_ - 1) continue;
+        if (ps.gap_step != step_index_ - 1) return;
         ps.gap_bound -= moved[static_cast<std::size_t>(ps.a)] + moved[static_cast<std::size_t>(ps.b)];
         ps.gap_step = step_index_;
-    }
+    });
 }
 
 bool NativeBackend::boundedApart(const PairState& ps) const {

@@ -61,10 +61,12 @@ struct IslandSolve {
 struct IslandScratch {
     std::vector<std::uint8_t> due_root;         // per body: the island it roots is due
     std::vector<int> more;                      // touching pairs of due islands still to sample
+    std::vector<int> first_manifold;            // per sample: its first manifold in `manifolds` (and the total)
     std::vector<ContactManifold> manifolds;     // the step's manifolds
     std::vector<std::pair<int, int>> cache_of;  // (pair, part pair) per manifold
     std::vector<Pose> frame_a;                  // per manifold: body A's scene frame at the step's time
     std::vector<std::uint8_t> resting;          // per manifold
+    std::vector<std::pair<int, int>> solved_at; // per manifold: its island's pool slot and local index
     std::vector<IslandSolve> pool;              // this step's islands in [0, used)
     std::size_t used = 0;
     std::vector<int> slot_of_root;  // per body: its island's pool slot this step, or -1

@@ -139,18 +139,28 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     std::vector<ContactManifold>& manifolds = sc.manifolds;
     std::vector<std::pair<int, int>>& cache_of = sc.cache_of;  // (pair, part pair) per manifold
     std::vector<Pose>& frame_a = sc.frame_a;
-    manifolds.clear();
-    cache_of.clear();
-    frame_a.clear();
-    for (const PairSample& s : samples) {
+    // Each sample's manifolds at their places in the list (known first): the workers share them.
+    std::vector<int>& first_of = sc.first_manifold;
+    first_of.resize(samples.size() + 1);
+    first_of[0] = 0;
+    for (std::size_t k = 0; k < samples.size(); ++k)
+        first_of[k + 1] = first_of[k] + static_cast<int>(samples[k].manifolds.size());
+    const auto total = static_cast<std::size_t>(first_of.back());
+    manifolds.resize(total);
+    cache_of.resize(total);
+    frame_a.resize(total);
+    partition_->forEachShared(samples.size(), kManifoldShare, [&](std::size_t k) {
+        const PairSample& s = samples[k];
+        if (s.manifolds.empty()) return;
         const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
         const Pose fa = bodies_[static_cast<std::size_t>(ps.a)].framePose();
-        for (std::size_t k = 0; k < s.manifolds.size(); ++k) {
-            manifolds.push_back(s.manifolds[k]);
-            cache_of.emplace_back(s.pair, s.manifold_part[k]);
-            frame_a.push_back(fa);
+        for (std::size_t j = 0; j < s.manifolds.size(); ++j) {
+            const auto m = static_cast<std::size_t>(first_of[k]) + j;
+            manifolds[m] = s.manifolds[j];
+            cache_of[m] = {s.pair, s.manifold_part[j]};
+            frame_a[m] = fa;
         }
-    }
+    });
     // Each manifold reads its own cache only: the workers share them out, the same bits.
     if (settings_.warm_start)
         partition_->forEachShared(manifolds.size(), kManifoldShare, [&](std::size_t m) {
@@ -235,27 +245,40 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     soft.correction_floor = solver.correction_floor;
     soft.warm_start = settings_.warm_start;
     const double resting_speed = scene_.gravity.norm() * h;
+    // The island's bodies and manifolds in local numbering; a shared island's copies are shared
+    // by the workers too (each entry its own).
     auto solveOne = [&](IslandSolve& is, const ContactSolverSettings& settings) {
-        is.local.reserve(is.bodies.size());
-        for (int id : is.bodies) {
-            is.local.push_back(bodies_[static_cast<std::size_t>(id)]);
+        const bool share = settings.team_size > 1;
+        auto forEach = [&](std::size_t count, const auto& fn) {
+            if (share)
+                partition_->forEachShared(count, kManifoldShare, fn);
+            else
+                for (std::size_t i = 0; i < count; ++i) fn(i);
+        };
+        is.local.resize(is.bodies.size());
+        forEach(is.bodies.size(), [&](std::size_t k) {
+            const int id = is.bodies[k];
+            RigidBody& local = is.local[k];
+            local = bodies_[static_cast<std::size_t>(id)];
             if (sc.held_ground[static_cast<std::size_t>(id)] != 0) {
                 // Held as ground by a local solve: infinite mass, moving as its drift does now.
-                RigidBody& ground = is.local.back();
-                ground.kinematic_angular_velocity = ground.angularVelocity();
-                ground.is_kinematic = true;
+                local.kinematic_angular_velocity = local.angularVelocity();
+                local.is_kinematic = true;
             }
-        }
+        });
         auto localOf = [&](int id) {
             return static_cast<int>(std::lower_bound(is.bodies.begin(), is.bodies.end(), id) - is.bodies.begin());
         };
-        for (int m : is.manifolds) {
-            is.solved.push_back(manifolds[static_cast<std::size_t>(m)]);
-            ContactManifold& lm = is.solved.back();
+        is.solved.resize(is.manifolds.size());
+        is.resting.resize(is.manifolds.size());
+        forEach(is.manifolds.size(), [&](std::size_t k) {
+            const auto m = static_cast<std::size_t>(is.manifolds[k]);
+            ContactManifold& lm = is.solved[k];
+            lm = manifolds[m];
             lm.body_a = localOf(lm.body_a);
             lm.body_b = localOf(lm.body_b);
-            is.resting.push_back(resting[static_cast<std::size_t>(m)]);
-        }
+            is.resting[k] = resting[m];
+        });
         // A shared island's team (settings.team_size workers) shares its collision phase too.
         collisionPhase(is.local, is.solved, is.resting, resting_speed, h, is.collision, settings.team_size, is.waves);
         is.report = softContact(settings_.touching)
@@ -322,16 +345,6 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         stats_.position_corrections += is->report.corrected_patches;
         stats_.max_island_bodies = std::max<std::int64_t>(stats_.max_island_bodies, static_cast<std::int64_t>(is->bodies.size()));
         if (is->report.ill_conditioned > 0) warn("ill_conditioned_solve", static_cast<std::uint64_t>(is->report.ill_conditioned));
-        for (std::size_t k = 0; k < is->manifolds.size(); ++k) {
-            const int m = is->manifolds[k];
-            ContactManifold& out = manifolds[static_cast<std::size_t>(m)];
-            const ContactManifold& lm = is->solved[k];
-            out.collision_impulse = lm.collision_impulse;
-            out.contact_impulse = lm.contact_impulse;
-            out.point_impulse = lm.point_impulse;
-            out.tangent_impulse = lm.tangent_impulse;
-            out.torsion_impulse = lm.torsion_impulse;
-        }
         for (std::size_t k = 0; k < is->bodies.size(); ++k) {
             const int body = is->bodies[k];
             if (infinite_mass_[static_cast<std::size_t>(body)] || sc.held_ground[static_cast<std::size_t>(body)] != 0)
@@ -355,9 +368,23 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         }
         if (!local) maybeSleep(is->bodies, t);   // a local solve saw part of the island
     }
-    // Manifolds go back to their caches, each to its own (body A's frame as at the warm start: no
-    // impulse moves a body, and the drifts' position corrections come after).
+    // Manifolds take their island's impulses and go back to their caches, each to its own (body
+    // A's frame as at the warm start: no impulse moves a body, and the drifts' position
+    // corrections come after).
+    std::vector<std::pair<int, int>>& solved_at = sc.solved_at;   // (pool slot, local manifold)
+    solved_at.resize(manifolds.size());
+    for (std::size_t k = 0; k < sc.used; ++k)
+        for (std::size_t j = 0; j < sc.pool[k].manifolds.size(); ++j)
+            solved_at[static_cast<std::size_t>(sc.pool[k].manifolds[j])] = {static_cast<int>(k), static_cast<int>(j)};
     partition_->forEachShared(manifolds.size(), kManifoldShare, [&](std::size_t m) {
+        const auto [slot, local] = solved_at[m];
+        const ContactManifold& lm = sc.pool[static_cast<std::size_t>(slot)].solved[static_cast<std::size_t>(local)];
+        ContactManifold& out = manifolds[m];
+        out.collision_impulse = lm.collision_impulse;
+        out.contact_impulse = lm.contact_impulse;
+        out.point_impulse = lm.point_impulse;
+        out.tangent_impulse = lm.tangent_impulse;
+        out.torsion_impulse = lm.torsion_impulse;
         const auto [pair, part] = cache_of[m];
         storeManifold(pairs_[static_cast<std::size_t>(pair)].manifolds[static_cast<std::size_t>(part)], frame_a[m], h,
                       manifolds[m]);

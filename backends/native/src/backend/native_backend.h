@@ -315,6 +315,7 @@ private:
     std::vector<std::uint8_t> sync_failed_; // syncAllBodies: per body, its state went non-finite
     // Per-step buffers, emptied and refilled at every internal step: no allocation once warm.
     std::vector<int> step_due_, step_entered_, step_again_;
+    std::vector<std::uint8_t> step_verdict_;   // fixedTick: per candidate pair, skipped, bounded or due
     std::vector<PairSample> step_samples_, step_resampled_, step_extra_;
     SortedIndexSet touching_;               // pairs_ indices of touching pairs (ascending)
     CollisionQueue queue_;                  // flight pairs by earliest possible contact time

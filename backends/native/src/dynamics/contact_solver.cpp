@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -669,6 +670,7 @@ struct Push {
 struct SolverScratch {
     std::vector<WorkBody> wb, predicted, pv;
     std::vector<PointConstraint> cs, centroids;
+    std::vector<int> first_point;   // per manifold, its first point constraint in cs (and the total)
     std::vector<Patch> patches;
     std::vector<Push> pushes;
     SweepSchedule plan;
@@ -752,20 +754,37 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     const Vec3 up = gravity.norm() > 0.0 ? Vec3(-gravity / gravity.norm()) : Vec3::Zero();   // for the levels
     std::vector<WorkBody>& wb = scratch.wb;
     wb.assign(bodies.size(), WorkBody{});
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
+    // A large island's set-up is shared by its team like its sweeps: every body and every manifold
+    // writes its own entries only (the same bits for any team).
+    const bool shared = settings.team && settings.team_size > 1 && manifolds.size() >= kTeamManifolds;
+    auto forEach = [&settings, shared](std::size_t count, const auto& fn) {
+        if (!shared) {
+            for (std::size_t i = 0; i < count; ++i) fn(i);
+            return;
+        }
+        using Body = std::remove_reference_t<decltype(fn)>;
+        struct Job {
+            std::size_t count, stride;
+            const Body* body;
+        } job{count, static_cast<std::size_t>(settings.team_size), &fn};
+        settings.team([&job](int worker) {   // one reference captured: no allocation
+            for (std::size_t i = static_cast<std::size_t>(worker); i < job.count; i += job.stride) (*job.body)(i);
+        });
+    };
+    forEach(bodies.size(), [&](std::size_t i) {
         const RigidBody& rb = bodies[i];
         wb[i].com = rb.com;
-        if (rb.is_static) continue;
+        if (rb.is_static) return;
         if (rb.is_kinematic) {   // infinite mass, moving: its velocity enters every relative velocity
             wb[i].v = rb.velocity;
             wb[i].w = rb.angularVelocity();
-            continue;
+            return;
         }
         wb[i].inv_mass = rb.inv_mass;
         wb[i].inv_inertia = rb.invInertiaWorld();
         wb[i].w = wb[i].inv_inertia * rb.angular_momentum;
         wb[i].v = rb.velocity;
-    }
+    });
     // Targets come from the velocities at the step start: a separating point may slow down to
     // minus its start speed (the average stays >= 0); an approaching or resting one must not approach.
     std::vector<PointConstraint>& cs = scratch.cs;
@@ -801,13 +820,22 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         }
         return c;
     };
-    for (std::size_t m = 0; m < manifolds.size(); ++m) {
+    // Each manifold's patch and its points' rows, in manifold order: its place in cs is known first.
+    std::vector<int>& first = scratch.first_point;
+    first.resize(manifolds.size() + 1);
+    first[0] = 0;
+    for (std::size_t m = 0; m < manifolds.size(); ++m)
+        first[m + 1] = first[m] + (single_point ? 1 : std::max<int>(1, static_cast<int>(manifolds[m].points.size())));
+    cs.resize(static_cast<std::size_t>(first.back()));
+    patches.resize(manifolds.size());
+    forEach(manifolds.size(), [&](std::size_t m) {
         const ContactManifold& mf = manifolds[m];
         PointArray<Vec3> pts = single_point ? PointArray<Vec3>{mf.centroid} : mf.points;
         if (pts.empty()) pts.push_back(mf.centroid);
         const bool gaps = !single_point && mf.point_gap.size() == pts.size();
-        Patch patch;
-        patch.first = static_cast<int>(cs.size());
+        Patch& patch = patches[m];
+        patch = Patch{};
+        patch.first = first[m];
         patch.count = static_cast<int>(pts.size());
         patch.friction = constraintAt(mf, static_cast<int>(m), mf.centroid, mf.distance);
         patch.rows = frictionRows(wb, patch.friction);
@@ -816,10 +844,10 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
             for (const Vec3& p : pts) mean += (p - mf.centroid).norm();
             patch.torsion_radius = (2.0 / 3.0) * mean / static_cast<double>(pts.size());
         }
-        patches.push_back(patch);
         for (std::size_t k = 0; k < pts.size(); ++k)
-            cs.push_back(constraintAt(mf, static_cast<int>(m), pts[k], gaps ? mf.point_gap[k] : mf.distance));
-    }
+            cs[static_cast<std::size_t>(patch.first) + k] =
+                constraintAt(mf, static_cast<int>(m), pts[k], gaps ? mf.point_gap[k] : mf.distance);
+    });
     report.points = static_cast<int>(cs.size());
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         if (!bodies[i].infiniteMass()) wb[i].v += gravity * h;
