@@ -2,7 +2,8 @@
 // The patch impulse (dynamics/patch_impulse.h) against closed forms and a brute-force
 // complementarity solve: a flat box landing on four corners leaves at e times its speed without
 // turning; a rocking plate's approaching corner is stopped and nothing is pulled; random
-// frictionless patches match the active-set enumeration of the same small LCP.
+// frictionless patches match the active-set enumeration of the same small LCP; sticking patches
+// match the enumeration of the same problem with the centroid's friction free, and stop its slip.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -169,6 +170,121 @@ TEST(DynamicsPatchImpulse, FrictionlessPatchesMatchTheEnumeratedComplementarityS
         ++checked;
     }
     EXPECT_GT(checked, 100);
+}
+
+// The sticking patch impact by brute force: every set of pushing points, with the centroid's two
+// friction impulses free, solved as one linear system of the collision matrix probed impulse by
+// impulse; the answer is the set whose impulses push, whose other points do not approach and whose
+// centroid stops slipping.
+struct StickingAnswer {
+    bool found = false;
+    Eigen::VectorXd normal;    // per point
+    Eigen::Vector2d friction;  // along t1, t2
+};
+
+StickingAnswer enumerateSticking(const Eigen::MatrixXd& full, const Eigen::VectorXd& q, int count) {
+    StickingAnswer best;
+    double best_norm = std::numeric_limits<double>::infinity();
+    for (int mask = 0; mask < (1 << count); ++mask) {
+        std::vector<int> rows;
+        for (int i = 0; i < count; ++i)
+            if (mask >> i & 1) rows.push_back(i);
+        rows.push_back(count);
+        rows.push_back(count + 1);
+        Eigen::MatrixXd ma(rows.size(), rows.size());
+        Eigen::VectorXd qa(rows.size());
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            qa(static_cast<Eigen::Index>(r)) = -q(rows[r]);
+            for (std::size_t c = 0; c < rows.size(); ++c) ma(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = full(rows[r], rows[c]);
+        }
+        const Eigen::VectorXd xa = ma.completeOrthogonalDecomposition().solve(qa);
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(count + 2);
+        for (std::size_t r = 0; r < rows.size(); ++r) x(rows[r]) = xa(static_cast<Eigen::Index>(r));
+        const Eigen::VectorXd w = full * x + q;
+        bool ok = std::abs(w(count)) < 1e-9 && std::abs(w(count + 1)) < 1e-9;
+        for (int i = 0; i < count; ++i) ok = ok && x(i) >= -1e-9 && w(i) >= -1e-9 && std::abs(x(i) * w(i)) < 1e-9;
+        if (ok && x.head(count).norm() < best_norm) {
+            best_norm = x.head(count).norm();
+            best.found = true;
+            best.normal = x.head(count);
+            best.friction = x.tail(2);
+        }
+    }
+    return best;
+}
+
+TEST(DynamicsPatchImpulse, StickingPatchesStopTheCentroidAndMatchTheEnumeratedSolution) {
+    std::mt19937_64 rng(2202);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int sticking = 0, sliding = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const Vec3 h(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
+        RigidBody a = boxBody(Vec3(1, 1, 1), 3.0, at(Vec3(0, 0, -1.0 - h.z())), Vec3(u(rng), u(rng), u(rng)) * 0.2,
+                              Vec3(u(rng), u(rng), u(rng)) * 0.3);
+        RigidBody b = boxBody(h, 1.0 + std::abs(u(rng)), at(Vec3::Zero()), Vec3(u(rng), u(rng), -1.0 + 0.5 * u(rng)),
+                              Vec3(u(rng), u(rng), u(rng)) * 2.0);
+        const int count = 2 + static_cast<int>(3 * std::abs(u(rng))) % 3;   // 2..4 corners
+        std::vector<Vec3> pts = bottomCorners(h);
+        pts.resize(static_cast<std::size_t>(count));
+        std::vector<double> e(pts.size());
+        for (double& x : e) x = 0.5 * std::abs(u(rng));
+        const double mu = 0.3 + 2.0 * std::abs(u(rng));
+        const Vec3 n = Vec3::UnitZ();
+        Vec3 c = Vec3::Zero();
+        for (const Vec3& p : pts) c += p;
+        c /= static_cast<double>(count);
+        const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+        bool any_approach = false;
+        for (const Vec3& p : pts) any_approach = any_approach || normalSpeed(a, b, p, n) < 0.0;
+        if (!any_approach) continue;
+        // Rows: each point's normal speed, then the centroid's slip along t1 and t2; columns: a unit
+        // normal impulse at each point, then a unit friction impulse at the centroid along t1, t2.
+        auto speeds = [&](const RigidBody& ra, const RigidBody& rb) {
+            Eigen::VectorXd v(count + 2);
+            for (int i = 0; i < count; ++i) v(i) = normalSpeed(ra, rb, pts[static_cast<std::size_t>(i)], n);
+            const Vec3 slip = rb.pointVelocity(c) - ra.pointVelocity(c);
+            v(count) = slip.dot(t1);
+            v(count + 1) = slip.dot(t2);
+            return v;
+        };
+        const Eigen::VectorXd u0 = speeds(a, b);
+        Eigen::MatrixXd full(count + 2, count + 2);
+        for (int j = 0; j < count + 2; ++j) {
+            const Vec3 dir = j < count ? n : (j == count ? t1 : t2);
+            const Vec3 at_point = j < count ? pts[static_cast<std::size_t>(j)] : c;
+            RigidBody a2 = a, b2 = b;
+            a2.applyImpulse(-dir, at_point);
+            b2.applyImpulse(dir, at_point);
+            full.col(j) = speeds(a2, b2) - u0;
+        }
+        Eigen::VectorXd q = u0;
+        for (int i = 0; i < count; ++i) q(i) -= u0(i) < 0.0 ? -e[static_cast<std::size_t>(i)] * u0(i) : 0.0;
+        const StickingAnswer expect = enumerateSticking(full, q, count);
+        const PatchImpulse imp = patchImpulse(a, b, pts, c, n, e, mu);
+        if (!expect.found || expect.friction.norm() > mu * expect.normal.sum() * (1.0 - 1e-9)) {
+            // Sliding: the friction impulse lies on the cone, never beyond it.
+            double sum = 0.0;
+            for (double x : imp.normal) sum += x;
+            EXPECT_LE(imp.tangent.norm(), mu * sum * (1.0 + 1e-9) + 1e-12) << "trial " << trial;
+            ++sliding;
+            continue;
+        }
+        // Sticking: the same speeds after the impact, and the centroid stopped.
+        Eigen::VectorXd got(count + 2);
+        for (int i = 0; i < count; ++i) got(i) = imp.normal[static_cast<std::size_t>(i)];
+        got(count) = imp.tangent.dot(t1);
+        got(count + 1) = imp.tangent.dot(t2);
+        Eigen::VectorXd want(count + 2);
+        want << expect.normal, expect.friction;
+        const Eigen::VectorXd w_got = full * got + q, w_want = full * want + q;
+        const double scale = 1.0 + q.cwiseAbs().maxCoeff();
+        for (int i = 0; i < count + 2; ++i) EXPECT_NEAR(w_got(i), w_want(i), 1e-9 * scale) << "trial " << trial << ", row " << i;
+        EXPECT_NEAR(w_got(count), 0.0, 1e-9 * scale) << "trial " << trial;
+        EXPECT_NEAR(w_got(count + 1), 0.0, 1e-9 * scale) << "trial " << trial;
+        ++sticking;
+    }
+    EXPECT_GT(sticking, 50);
+    EXPECT_GT(sliding, 10);
 }
 
 TEST(DynamicsPatchImpulse, OnePointAgreesWithTheSinglePointModel) {

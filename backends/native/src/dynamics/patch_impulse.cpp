@@ -264,6 +264,47 @@ PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<cons
     const Eigen::Matrix2d kt = tangentMass();
     const bool friction_ok = friction > 0.0 && kt.determinant() > 0.0;
     const Eigen::Matrix2d kt_inv = friction_ok ? Eigen::Matrix2d(kt.inverse()) : Eigen::Matrix2d::Zero();
+    // Sticking, solved at once: with the centroid's slip stopped, the friction impulse is a linear
+    // function of the normal ones, lambda = -kt^-1 (u_t + M_tn y), and what remains is the normal
+    // problem on the Schur complement S = M - M_nt kt^-1 M_tn (positive semi-definite, as the whole
+    // patch's mass matrix is): one complementarity solve. If its friction lies inside the cone, it
+    // is the alternation's fixed point below, exactly (the alternation crept to it: six passes on
+    // average, half of them stopping at the cap short of it, in a turning drum). Else the patch
+    // slides, and the alternation finds where on the cone.
+    if (friction_ok) {
+        const Vec3 slip = sb.at(centroid) - sa.at(centroid);
+        const Eigen::Vector2d qt(slip.dot(t1), slip.dot(t2));
+        const Vec3 ca = centroid - sa.com, cb = centroid - sb.com;
+        const std::array<Vec3, 2> spin_a{ca.cross(t1), ca.cross(t2)}, spin_b{cb.cross(t1), cb.cross(t2)};
+        // M_nt(i, k): the normal speed change at point i per unit friction impulse along t_k.
+        Eigen::Matrix<double, kMaxPoints, 2> mnt = Eigen::Matrix<double, kMaxPoints, 2>::Zero();
+        for (int i = 0; i < count; ++i)
+            for (int k = 0; k < 2; ++k)
+                mnt(i, k) = turn_a[static_cast<std::size_t>(i)].dot(spin_a[static_cast<std::size_t>(k)]) +
+                            turn_b[static_cast<std::size_t>(i)].dot(spin_b[static_cast<std::size_t>(k)]);
+        const Eigen::Matrix<double, kMaxPoints, 2> mnt_kt = mnt * kt_inv;
+        Block schur = Block::Zero();
+        BlockVector q = BlockVector::Zero();
+        for (int i = 0; i < count; ++i) {
+            q(i) = normalSpeed(i) - target(i) - mnt_kt.row(i).dot(qt);
+            for (int j = 0; j < count; ++j) schur(i, j) = m(i, j) - mnt_kt.row(i).dot(mnt.row(j));
+        }
+        const BlockVector y = solveNormalLcp(schur, q, count);
+        if (y.allFinite()) {
+            Eigen::Vector2d pressed = qt;
+            double sum = 0.0;
+            for (int j = 0; j < count; ++j) {
+                pressed += y(j) * mnt.row(j).transpose();
+                sum += y(j);
+            }
+            const Eigen::Vector2d lambda = -kt_inv * pressed;
+            if (lambda.allFinite() && lambda.norm() <= friction * sum) {
+                for (int i = 0; i < count; ++i) out.normal[static_cast<std::size_t>(i)] = y(i);
+                out.tangent = lambda(0) * t1 + lambda(1) * t2;
+                return out;
+            }
+        }
+    }
     Eigen::Vector2d lambda_t = Eigen::Vector2d::Zero();
     auto pushNormal = [&](int i, double d) {
         const Vec3 j = d * n;
