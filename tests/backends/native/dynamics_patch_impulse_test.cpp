@@ -91,6 +91,21 @@ TEST(DynamicsPatchImpulse, RockingPlateIsStoppedAtTheApproachingCornerAndNothing
     EXPECT_LT(plate.angularVelocity().x(), 2.0);
 }
 
+// The rows and columns `rows` of M x + q = 0 solved (minimum norm), x zero elsewhere.
+Eigen::VectorXd solveOnRows(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const std::vector<int>& rows) {
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(q.size());
+    if (rows.empty()) return x;
+    Eigen::MatrixXd ma(rows.size(), rows.size());
+    Eigen::VectorXd qa(rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        qa(static_cast<Eigen::Index>(r)) = -q(rows[r]);
+        for (std::size_t c = 0; c < rows.size(); ++c) ma(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = m(rows[r], rows[c]);
+    }
+    const Eigen::VectorXd xa = ma.completeOrthogonalDecomposition().solve(qa);
+    for (std::size_t r = 0; r < rows.size(); ++r) x(rows[r]) = xa(static_cast<Eigen::Index>(r));
+    return x;
+}
+
 // Frictionless patch LCP: w = M x + q >= 0, x >= 0, x.w = 0 with q_i = u_i - target_i. Solved by
 // trying every active set (N <= 4): an independent answer for the patch impulse.
 Eigen::VectorXd enumerateLcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q) {
@@ -101,17 +116,7 @@ Eigen::VectorXd enumerateLcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q)
         std::vector<int> act;
         for (int i = 0; i < n; ++i)
             if (mask >> i & 1) act.push_back(i);
-        Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-        if (!act.empty()) {
-            Eigen::MatrixXd ma(act.size(), act.size());
-            Eigen::VectorXd qa(act.size());
-            for (std::size_t r = 0; r < act.size(); ++r) {
-                qa(static_cast<Eigen::Index>(r)) = -q(act[r]);
-                for (std::size_t c = 0; c < act.size(); ++c) ma(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = m(act[r], act[c]);
-            }
-            const Eigen::VectorXd xa = ma.completeOrthogonalDecomposition().solve(qa);
-            for (std::size_t r = 0; r < act.size(); ++r) x(act[r]) = xa(static_cast<Eigen::Index>(r));
-        }
+        const Eigen::VectorXd x = solveOnRows(m, q, act);
         const Eigen::VectorXd w = m * x + q;
         if (x.minCoeff() < -1e-9 || w.minCoeff() < -1e-9) continue;
         if (std::abs(x.dot(w)) > 1e-9) continue;
@@ -191,15 +196,7 @@ StickingAnswer enumerateSticking(const Eigen::MatrixXd& full, const Eigen::Vecto
             if (mask >> i & 1) rows.push_back(i);
         rows.push_back(count);
         rows.push_back(count + 1);
-        Eigen::MatrixXd ma(rows.size(), rows.size());
-        Eigen::VectorXd qa(rows.size());
-        for (std::size_t r = 0; r < rows.size(); ++r) {
-            qa(static_cast<Eigen::Index>(r)) = -q(rows[r]);
-            for (std::size_t c = 0; c < rows.size(); ++c) ma(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = full(rows[r], rows[c]);
-        }
-        const Eigen::VectorXd xa = ma.completeOrthogonalDecomposition().solve(qa);
-        Eigen::VectorXd x = Eigen::VectorXd::Zero(count + 2);
-        for (std::size_t r = 0; r < rows.size(); ++r) x(rows[r]) = xa(static_cast<Eigen::Index>(r));
+        const Eigen::VectorXd x = solveOnRows(full, q, rows);
         const Eigen::VectorXd w = full * x + q;
         bool ok = std::abs(w(count)) < 1e-9 && std::abs(w(count + 1)) < 1e-9;
         for (int i = 0; i < count; ++i) ok = ok && x(i) >= -1e-9 && w(i) >= -1e-9 && std::abs(x(i) * w(i)) < 1e-9;
