@@ -91,6 +91,29 @@ TEST(DynamicsPatchImpulse, RockingPlateIsStoppedAtTheApproachingCornerAndNothing
     EXPECT_LT(plate.angularVelocity().x(), 2.0);
 }
 
+// A box of random size and mass landing on a large box below it with 2-4 of its bottom corners:
+// the lower box moves at up to `va` m/s and turns at up to `wa` rad/s per axis, the upper one falls
+// at 0.5-1.5 m/s and turns at up to `wb`.
+struct Landing {
+    RigidBody a, b;
+    Vec3 h;
+    std::vector<Vec3> pts;
+};
+
+Landing randomLanding(std::mt19937_64& rng, double va, double wa, double wb) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Landing l;
+    l.h = Vec3(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
+    l.a = boxBody(Vec3(1, 1, 1), 3.0, at(Vec3(0, 0, -1.0 - l.h.z())), Vec3(u(rng), u(rng), u(rng)) * va,
+                  Vec3(u(rng), u(rng), u(rng)) * wa);
+    l.b = boxBody(l.h, 1.0 + std::abs(u(rng)), at(Vec3::Zero()), Vec3(u(rng), u(rng), -1.0 + 0.5 * u(rng)),
+                  Vec3(u(rng), u(rng), u(rng)) * wb);
+    const int count = 2 + static_cast<int>(3 * std::abs(u(rng))) % 3;   // 2..4 corners
+    l.pts = bottomCorners(l.h);
+    l.pts.resize(static_cast<std::size_t>(count));
+    return l;
+}
+
 // The rows and columns `rows` of M x + q = 0 solved (minimum norm), x zero elsewhere.
 Eigen::VectorXd solveOnRows(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const std::vector<int>& rows) {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(q.size());
@@ -133,14 +156,8 @@ TEST(DynamicsPatchImpulse, FrictionlessPatchesMatchTheEnumeratedComplementarityS
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int checked = 0;
     for (int trial = 0; trial < 200; ++trial) {
-        const Vec3 h(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
-        RigidBody a = boxBody(Vec3(1, 1, 1), 3.0, at(Vec3(0, 0, -1.0 - h.z())), Vec3(u(rng), u(rng), u(rng)) * 0.5,
-                              Vec3(u(rng), u(rng), u(rng)));
-        RigidBody b = boxBody(h, 1.0 + std::abs(u(rng)), at(Vec3::Zero()), Vec3(u(rng), u(rng), -1.0 + 0.5 * u(rng)),
-                              Vec3(u(rng), u(rng), u(rng)) * 3.0);
-        const int count = 2 + static_cast<int>(3 * std::abs(u(rng))) % 3;   // 2..4 corners
-        std::vector<Vec3> pts = bottomCorners(h);
-        pts.resize(static_cast<std::size_t>(count));
+        auto [a, b, h, pts] = randomLanding(rng, 0.5, 1.0, 3.0);
+        const int count = static_cast<int>(pts.size());
         std::vector<double> e(pts.size());
         for (double& x : e) x = std::abs(u(rng));
         const Vec3 n = Vec3::UnitZ();
@@ -215,14 +232,8 @@ TEST(DynamicsPatchImpulse, StickingPatchesStopTheCentroidAndMatchTheEnumeratedSo
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int sticking = 0, sliding = 0;
     for (int trial = 0; trial < 300; ++trial) {
-        const Vec3 h(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
-        RigidBody a = boxBody(Vec3(1, 1, 1), 3.0, at(Vec3(0, 0, -1.0 - h.z())), Vec3(u(rng), u(rng), u(rng)) * 0.2,
-                              Vec3(u(rng), u(rng), u(rng)) * 0.3);
-        RigidBody b = boxBody(h, 1.0 + std::abs(u(rng)), at(Vec3::Zero()), Vec3(u(rng), u(rng), -1.0 + 0.5 * u(rng)),
-                              Vec3(u(rng), u(rng), u(rng)) * 2.0);
-        const int count = 2 + static_cast<int>(3 * std::abs(u(rng))) % 3;   // 2..4 corners
-        std::vector<Vec3> pts = bottomCorners(h);
-        pts.resize(static_cast<std::size_t>(count));
+        auto [a, b, h, pts] = randomLanding(rng, 0.2, 0.3, 2.0);
+        const int count = static_cast<int>(pts.size());
         std::vector<double> e(pts.size());
         for (double& x : e) x = 0.5 * std::abs(u(rng));
         const double mu = 0.3 + 2.0 * std::abs(u(rng));
