@@ -246,17 +246,10 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     soft.warm_start = settings_.warm_start;
     const double resting_speed = scene_.gravity.norm() * h;
     // The island's bodies and manifolds in local numbering; a shared island's copies are shared
-    // by the workers too (each entry its own).
+    // by its team too (forEachOnTeam: each entry its own).
     auto solveOne = [&](IslandSolve& is, const ContactSolverSettings& settings) {
-        const bool share = settings.team_size > 1;
-        auto forEach = [&](std::size_t count, const auto& fn) {
-            if (share)
-                partition_->forEachShared(count, kManifoldShare, fn);
-            else
-                for (std::size_t i = 0; i < count; ++i) fn(i);
-        };
         is.local.resize(is.bodies.size());
-        forEach(is.bodies.size(), [&](std::size_t k) {
+        forEachOnTeam(settings, true, is.bodies.size(), [&](std::size_t k) {
             const int id = is.bodies[k];
             RigidBody& local = is.local[k];
             local = bodies_[static_cast<std::size_t>(id)];
@@ -271,7 +264,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         };
         is.solved.resize(is.manifolds.size());
         is.resting.resize(is.manifolds.size());
-        forEach(is.manifolds.size(), [&](std::size_t k) {
+        forEachOnTeam(settings, true, is.manifolds.size(), [&](std::size_t k) {
             const auto m = static_cast<std::size_t>(is.manifolds[k]);
             ContactManifold& lm = is.solved[k];
             lm = manifolds[m];

@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <type_traits>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -756,22 +755,8 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
     wb.assign(bodies.size(), WorkBody{});
     // A large island's set-up is shared by its team like its sweeps: every body and every manifold
     // writes its own entries only (the same bits for any team).
-    const bool shared = settings.team && settings.team_size > 1 && manifolds.size() >= kTeamManifolds;
-    auto forEach = [&settings, shared](std::size_t count, const auto& fn) {
-        if (!shared) {
-            for (std::size_t i = 0; i < count; ++i) fn(i);
-            return;
-        }
-        using Body = std::remove_reference_t<decltype(fn)>;
-        struct Job {
-            std::size_t count, stride;
-            const Body* body;
-        } job{count, static_cast<std::size_t>(settings.team_size), &fn};
-        settings.team([&job](int worker) {   // one reference captured: no allocation
-            for (std::size_t i = static_cast<std::size_t>(worker); i < job.count; i += job.stride) (*job.body)(i);
-        });
-    };
-    forEach(bodies.size(), [&](std::size_t i) {
+    const bool shared = manifolds.size() >= kTeamManifolds;
+    forEachOnTeam(settings, shared, bodies.size(), [&](std::size_t i) {
         const RigidBody& rb = bodies[i];
         wb[i].com = rb.com;
         if (rb.is_static) return;
@@ -828,7 +813,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         first[m + 1] = first[m] + (single_point ? 1 : std::max<int>(1, static_cast<int>(manifolds[m].points.size())));
     cs.resize(static_cast<std::size_t>(first.back()));
     patches.resize(manifolds.size());
-    forEach(manifolds.size(), [&](std::size_t m) {
+    forEachOnTeam(settings, shared, manifolds.size(), [&](std::size_t m) {
         const ContactManifold& mf = manifolds[m];
         PointArray<Vec3> pts = single_point ? PointArray<Vec3>{mf.centroid} : mf.points;
         if (pts.empty()) pts.push_back(mf.centroid);

@@ -59,6 +59,24 @@ struct ContactSolverSettings {
     int team_size = 1;
 };
 
+/// fn(i) for every i in [0, count): by `settings.team` (worker w takes i = w, w + team_size, ...)
+/// if `share` and there is a team, else on the calling thread. fn must touch nothing but what
+/// belongs to i: then the same bits either way.
+template <class Fn>
+void forEachOnTeam(const ContactSolverSettings& settings, bool share, std::size_t count, const Fn& fn) {
+    if (!share || !settings.team || settings.team_size <= 1) {
+        for (std::size_t i = 0; i < count; ++i) fn(i);
+        return;
+    }
+    struct Job {
+        std::size_t count, stride;
+        const Fn* fn;
+    } job{count, static_cast<std::size_t>(settings.team_size), &fn};
+    settings.team([&job](int worker) {   // one reference captured: no allocation
+        for (std::size_t i = static_cast<std::size_t>(worker); i < job.count; i += job.stride) (*job.fn)(i);
+    });
+}
+
 /// Per body: the impulses the contact phase applies over the step.
 struct BodyImpulse {
     Vec3 linear = Vec3::Zero();    ///< [N s] sum of impulses, world
