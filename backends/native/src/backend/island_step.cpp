@@ -526,7 +526,7 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
     std::array<std::array<std::uint8_t, kMaxCollisionTeam>, 2> applied{};
     SpinBarrier barrier(workers);
     const auto team = static_cast<std::size_t>(workers);
-    partition_->run(team, [&](std::size_t w, int) {
+    auto share = [&](std::size_t w) {
         CollisionTally& tally = tallies[w];
         for (int sweep = 0; sweep < sweeps; ++sweep) {
             std::uint8_t& mine = applied[static_cast<std::size_t>(sweep % 2)][w];
@@ -540,7 +540,9 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
             const auto& flags = applied[static_cast<std::size_t>(sweep % 2)];
             if (std::none_of(flags.begin(), flags.begin() + workers, [](std::uint8_t f) { return f != 0; })) break;
         }
-    });
+    };
+    // One reference captured: std::function stores it in place (no allocation per solve).
+    partition_->run(team, [&share](std::size_t w, int) { share(w); });
     for (std::size_t w = 0; w < team; ++w) addTally(tallies[w]);
 }
 

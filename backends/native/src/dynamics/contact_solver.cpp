@@ -879,11 +879,12 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         SweepCounts counts;
         if (settings.team && settings.team_size > 1 && manifolds.size() >= kTeamManifolds) {
             SpinBarrier barrier(settings.team_size);
-            settings.team([&](int worker) {
+            auto sweep = [&](int worker) {
                 const SweepCounts mine = runSweeps(wb, cs, plan, sweeps, shock, settings.tolerance, worker,
                                                    settings.team_size, &barrier, changes);
                 if (worker == 0) counts = mine;
-            });
+            };
+            settings.team([&sweep](int worker) { sweep(worker); });   // one reference captured: no allocation
         } else {
             counts = runSweeps(wb, cs, plan, sweeps, shock, settings.tolerance, 0, 1, nullptr, changes);
         }
