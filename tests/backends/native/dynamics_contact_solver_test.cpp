@@ -2,7 +2,9 @@
 // The contact phase's block solve of a patch: one sweep gives the minimum-norm normal impulses that
 // stop every point's approach, checked against the pseudo-inverse of the explicitly assembled
 // 12-dof system (J W J^T, solved by SVD), for patches of 2, 3 and 4 points, collinear ones included;
-// and which islands count as cold (the extra sweeps of a first solve).
+// a sticking patch alone on its bodies solved whole (normals, friction and spin friction in one
+// solve) against the same system with the friction rows added; and which islands count as cold
+// (the extra sweeps of a first solve).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -115,6 +117,123 @@ TEST(ContactSolverBlock, PatchOnAStaticBody) { expectBlockSolve(4, false, true, 
 TEST(ContactSolverBlock, CollinearPointsFallBackToTheGeneralInverse) { expectBlockSolve(4, true, false, 14); }
 TEST(ContactSolverBlock, TwoPointPatch) { expectBlockSolve(2, false, false, 15); }
 
+
+// A patch that sticks, alone on its two bodies, is solved whole: its normal points, the friction at
+// its centroid and the spin friction about its normal in one solve, with no sweep after it. The
+// reference: the minimum-norm solution of the explicitly assembled 12-dof system whose rows are the
+// points' normals, the two tangents at the centroid and the spin about the normal (J W J^T, by SVD),
+// which stops every point's approach and the pair's sliding and spin there.
+struct Sticking {
+    Eigen::VectorXd normal;   // per point
+    Vec3 tangent;             // world
+    double torsion = 0.0;
+};
+
+Sticking referenceSticking(const Case& c) {
+    const ContactManifold& m = c.manifold;
+    const int n = static_cast<int>(m.points.size());
+    const Vec3 t1 = m.normal.unitOrthogonal(), t2 = m.normal.cross(t1);
+    Eigen::MatrixXd j = Eigen::MatrixXd::Zero(n + 3, 12);
+    Eigen::VectorXd u(12);
+    Eigen::MatrixXd w = Eigen::MatrixXd::Zero(12, 12);
+    for (int k = 0; k < 2; ++k) {
+        const RigidBody& b = c.bodies[static_cast<std::size_t>(k)];
+        u.segment<3>(6 * k) = b.velocity;
+        u.segment<3>(6 * k + 3) = b.is_static ? Vec3::Zero() : b.angularVelocity();
+        w.block<3, 3>(6 * k, 6 * k) = b.inv_mass * Mat3::Identity();
+        w.block<3, 3>(6 * k + 3, 6 * k + 3) = b.is_static ? Mat3::Zero() : b.invInertiaWorld();
+    }
+    auto along = [&](int row, const Vec3& p, const Vec3& d) {
+        j.block<1, 3>(row, 0) = -d.transpose();
+        j.block<1, 3>(row, 3) = -(p - c.bodies[0].com).cross(d).transpose();
+        j.block<1, 3>(row, 6) = d.transpose();
+        j.block<1, 3>(row, 9) = (p - c.bodies[1].com).cross(d).transpose();
+    };
+    for (int i = 0; i < n; ++i) along(i, m.points[static_cast<std::size_t>(i)], m.normal);
+    along(n, m.centroid, t1);
+    along(n + 1, m.centroid, t2);
+    j.block<1, 3>(n + 2, 3) = -m.normal.transpose();
+    j.block<1, 3>(n + 2, 9) = m.normal.transpose();
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(j * w * j.transpose(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+    svd.setThreshold(1e-10);
+    const Eigen::VectorXd x = svd.solve(-(j * u));
+    return {x.head(n), x(n) * t1 + x(n + 1) * t2, x(n + 2)};
+}
+
+// The model's spin friction radius: (2/3) of the points' mean distance from the centroid.
+double torsionRadius(const ContactManifold& m) {
+    double mean = 0.0;
+    for (const Vec3& p : m.points) mean += (p - m.centroid).norm();
+    return (2.0 / 3.0) * mean / static_cast<double>(m.points.size());
+}
+
+ContactSolverSettings noPositionPass() {
+    ContactSolverSettings s;
+    s.warm_start = false;
+    s.correction_iterations = 0;
+    return s;
+}
+
+void expectWholeSolve(int count, bool a_static, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        Case c = randomPatch(rng, count, false, a_static);
+        c.manifold.friction = 2.0;
+        const Sticking expected = referenceSticking(c);
+        const double sum = expected.normal.sum(), limit = c.manifold.friction * sum;
+        // Only patches whose sticking answer pushes at every point and lies inside both cones
+        // (with a margin, so rounding cannot tip one over).
+        if (expected.normal.minCoeff() < 0.0 || expected.tangent.norm() > 0.99 * limit ||
+            std::abs(expected.torsion) > 0.99 * limit * torsionRadius(c.manifold))
+            continue;
+        std::vector<ContactManifold> manifolds{c.manifold};
+        std::vector<BodyImpulse> impulses;
+        const ContactSolverReport report =
+            solveContactPhase(c.bodies, manifolds, 1.0 / 60.0, Vec3::Zero(), noPositionPass(), impulses);
+        EXPECT_EQ(report.sweeps, 1) << "seed " << seed << " trial " << trial;
+        EXPECT_EQ(report.shock_sweeps, 0) << "seed " << seed << " trial " << trial;
+        const double scale = 1e-9 * (1.0 + expected.normal.cwiseAbs().maxCoeff());
+        ASSERT_EQ(manifolds[0].point_impulse.size(), static_cast<std::size_t>(count));
+        for (int i = 0; i < count; ++i)
+            EXPECT_NEAR(manifolds[0].point_impulse[static_cast<std::size_t>(i)], expected.normal(i), scale)
+                << "seed " << seed << " trial " << trial << " point " << i;
+        EXPECT_LE((manifolds[0].tangent_impulse - expected.tangent).norm(), scale) << "seed " << seed << " trial " << trial;
+        EXPECT_NEAR(manifolds[0].torsion_impulse, expected.torsion, scale) << "seed " << seed << " trial " << trial;
+        ++checked;
+    }
+    EXPECT_GE(checked, 40) << "too few sticking patches to test";
+}
+
+TEST(ContactSolverWholePatch, FourPointStickingPatchIsSolvedWholeInOneSweep) { expectWholeSolve(4, false, 21); }
+TEST(ContactSolverWholePatch, ThreePointStickingPatchIsSolvedWholeInOneSweep) { expectWholeSolve(3, false, 22); }
+TEST(ContactSolverWholePatch, StickingPatchOnAStaticBody) { expectWholeSolve(4, true, 23); }
+
+// A patch whose sticking answer lies outside the friction cone is not solved whole: it is relaxed
+// part by part, and its friction ends on the cone (|friction| = mu x the sum of its normal impulses).
+TEST(ContactSolverWholePatch, SlidingPatchKeepsItsFrictionOnTheCone) {
+    std::mt19937_64 rng(24);
+    int checked = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        Case c = randomPatch(rng, 4, false, true);
+        // A tangential slide on top of the approach.
+        const Vec3 t = c.manifold.normal.unitOrthogonal();
+        c.bodies[1].velocity += 0.5 * t;
+        c.manifold.friction = 0.1;
+        const Sticking stuck = referenceSticking(c);
+        if (stuck.normal.minCoeff() < 0.0 || !(stuck.tangent.norm() > 1.5 * 0.1 * stuck.normal.sum())) continue;
+        std::vector<ContactManifold> manifolds{c.manifold};
+        std::vector<BodyImpulse> impulses;
+        const ContactSolverReport report =
+            solveContactPhase(c.bodies, manifolds, 1.0 / 60.0, Vec3::Zero(), noPositionPass(), impulses);
+        EXPECT_GT(report.sweeps, 1) << "trial " << trial;
+        double sum = 0.0;
+        for (double x : manifolds[0].point_impulse) sum += x;
+        EXPECT_NEAR(manifolds[0].tangent_impulse.norm(), 0.1 * sum, 1e-9 * (1.0 + sum)) << "trial " << trial;
+        ++checked;
+    }
+    EXPECT_GE(checked, 40) << "too few sliding patches to test";
+}
 
 // The cold solve's extra sweeps (ContactSolverSettings::cold_factor) are for an island whose
 // touching patches have no impulses to start from. A grid of boxes resting on a floor, each patch

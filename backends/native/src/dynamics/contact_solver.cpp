@@ -258,6 +258,20 @@ void assignLevels(std::vector<WorkBody>& wb, const std::vector<RigidBody>& bodie
     }
 }
 
+// What a patch alone on its bodies keeps to be solved whole (relaxStickingPatch): the factor of its
+// 6 x 6 mass at the centroid for the last two freeze states a sweep used (a patch sees at most two:
+// its own and the shock sweeps'), and the map from its normal force and tilting moments to its points.
+struct WholePatch {
+    struct Sticking {
+        Eigen::LLT<Eigen::Matrix<double, 6, 6>> factor;
+        int key = -1;
+        bool valid = false;
+    };
+    std::array<Sticking, 2> sticking;
+    Eigen::Matrix<double, 4, 3> spread;   // P = T (T^T T)^-1 (patchBlockInverse's notation)
+    int spread_state = 0;                 // 0 not computed, 1 valid, -1 collinear or fewer than 3 points
+};
+
 // A patch: its normal points cs[first, first + count) and its friction constraint at the centroid.
 struct Patch {
     PointConstraint friction;
@@ -274,6 +288,8 @@ struct Patch {
     std::array<TangentMass, 4> tangent;
     std::array<double, 4> torsion_k{};   // [1/(kg m^2)] n.(I_a^-1 + I_b^-1).n per freeze state
     std::array<bool, 4> torsion_cached{};
+    WholePatch* whole = nullptr;   // a patch alone on its bodies: solved whole (relaxStickingPatch)
+    bool sliding = false;          // its last relaxation part by part left friction on the cone
 };
 
 // The position pass freezes the body of the lower level (shock propagation), which is right where
@@ -432,6 +448,155 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
     return true;
 }
 
+// The points' map P = T (T^T T)^-1 of patchBlockInverse: a normal force and two tilting moments
+// about the centroid, (N, M1, M2) = T^T x, spread over the points with the least norm, x = P (N, M1, M2).
+// False for fewer than 3 points or points (nearly) on a line.
+bool patchSpread(const std::vector<PointConstraint>& cs, Patch& p) {
+    WholePatch& w = *p.whole;
+    if (w.spread_state != 0) return w.spread_state > 0;
+    w.spread_state = -1;
+    const int n = p.count;
+    if (n < 3 || n > 4) return false;
+    const PointConstraint& f = p.friction;
+    Eigen::Matrix<double, 4, 3> t = Eigen::Matrix<double, 4, 3>::Zero();
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const Vec3 s = cs[static_cast<std::size_t>(p.first + i)].ra_n - f.ra_n;
+        t.row(i) << 1.0, s.dot(f.t1), s.dot(f.t2);
+        mean += t.row(i).tail<2>().transpose();
+    }
+    mean /= static_cast<double>(n);
+    Eigen::Matrix2d spread = Eigen::Matrix2d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d d = t.row(i).tail<2>().transpose() - mean;
+        spread += d * d.transpose();
+    }
+    if (!(spread.determinant() > 1e-8 * spread.trace() * spread.trace())) return false;
+    w.spread = t * (t.transpose() * t).inverse();
+    if (!w.spread.allFinite()) return false;
+    w.spread_state = 1;
+    return true;
+}
+
+// The factor of the patch's 6 x 6 mass at its centroid in the frame (n, t1, t2): the relative
+// velocity of the two bodies there (along n, t1, t2) and their relative spin (about t1, t2, n)
+// per unit impulse along n, t1, t2 at the centroid and unit moment about t1, t2, n. Ordered as the
+// solve uses it: normal force, tilting moments about t1 and t2, friction along t1 and t2, spin
+// friction about n. Null when the mass is singular (no free body).
+const Eigen::LLT<Eigen::Matrix<double, 6, 6>>* stickingFactor(const std::vector<WorkBody>& wb, Patch& p,
+                                                             bool freeze_a, bool freeze_b) {
+    const int key = freezeKey(freeze_a, freeze_b);
+    auto& cache = p.whole->sticking;
+    for (const WholePatch::Sticking& s : cache)
+        if (s.key == key) return s.valid ? &s.factor : nullptr;
+    if (cache[0].key >= 0 && cache[1].key >= 0) cache[0] = cache[1];
+    WholePatch::Sticking& slot = cache[cache[0].key < 0 ? 0 : 1];
+    slot.key = key;
+    slot.valid = false;
+    const PointConstraint& f = p.friction;
+    // World blocks: an impulse L at the centroid and a moment M change a body's velocity there by
+    // (1/m - [r] I^-1 [r]) L - [r] I^-1 M and its spin by I^-1 [r] L + I^-1 M ([r] x = r x x).
+    Mat3 ll = Mat3::Zero(), ml = Mat3::Zero(), mm = Mat3::Zero();
+    auto addBody = [&](const WorkBody& body, const Vec3& r) {
+        const Mat3 c = skew(r);
+        const Mat3 ic = body.inv_inertia * c;
+        ll += body.inv_mass * Mat3::Identity() - c * ic;
+        ml += ic;
+        mm += body.inv_inertia;
+    };
+    if (!freeze_a) addBody(wb[f.a], f.ra);
+    if (!freeze_b) addBody(wb[f.b], f.rb);
+    // Into the patch frame, in the solve's order: (lin n, ang t1, ang t2, lin t1, lin t2, ang n).
+    const std::array<Vec3, 6> axis{f.n, f.t1, f.t2, f.t1, f.t2, f.n};
+    const std::array<bool, 6> angular{false, true, true, false, false, true};
+    Eigen::Matrix<double, 6, 6> k;
+    for (std::size_t i = 0; i < 6; ++i)
+        for (std::size_t j = 0; j <= i; ++j) {
+            const Mat3& block = angular[i] ? (angular[j] ? mm : ml) : (angular[j] ? Mat3(ml.transpose()) : ll);
+            k(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = axis[i].dot(block * axis[j]);
+            k(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) = k(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+        }
+    slot.factor.compute(k);
+    const auto d = slot.factor.matrixLLT().diagonal();
+    slot.valid = slot.factor.info() == Eigen::Success && d.allFinite() && d.minCoeff() > 1e-6 * d.maxCoeff();
+    return slot.valid ? &slot.factor : nullptr;
+}
+
+// A patch that sticks, solved whole: its normal points, the friction at its centroid and the spin
+// friction about its normal in one 6 x 6 solve (the pair's relative motion at the centroid
+// stopped, each point brought to its target in the least-squares sense of the normal block). The
+// relaxations one after another (normal block, friction, spin) reach the same answer only in the
+// limit: a box standing alone on the floor took 12 of them a solve. Accepted only if every point
+// pushes, the friction stays inside its cone and the spin friction within its limit; otherwise
+// nothing is applied and the caller relaxes the parts one after another.
+bool relaxStickingPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p, bool freeze_a,
+                        bool freeze_b, double& change) {
+    PointConstraint& f = p.friction;
+    if (p.whole == nullptr || p.sliding || !(f.mu > 0.0) || !(p.torsion_radius > 0.0) || !patchSpread(cs, p)) return false;
+    const Eigen::LLT<Eigen::Matrix<double, 6, 6>>* factor = stickingFactor(wb, p, freeze_a, freeze_b);
+    if (factor == nullptr) return false;
+    WorkBody& a = wb[f.a];
+    WorkBody& b = wb[f.b];
+    const int n = p.count;
+    const double un_lin = f.n.dot(b.v - a.v);
+    Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
+        rhs(i) = ci.target - (un_lin + b.w.dot(ci.rb_n) - a.w.dot(ci.ra_n));
+    }
+    const Vec3 dv = b.v - a.v;
+    const Vec3 spin = b.w - a.w;
+    Eigen::Matrix<double, 6, 1> error;
+    error.head<3>() = p.whole->spread.transpose() * rhs;   // least squares: rhs ~ T (dN, dM1, dM2) velocities
+    error(3) = -(f.t1.dot(dv) + b.w.dot(p.rows.t1.rb) - a.w.dot(p.rows.t1.ra));
+    error(4) = -(f.t2.dot(dv) + b.w.dot(p.rows.t2.rb) - a.w.dot(p.rows.t2.ra));
+    error(5) = -spin.dot(f.n);
+    const Eigen::Matrix<double, 6, 1> d = factor->solve(error);
+    if (!d.allFinite()) return false;
+    const Eigen::Vector4d x = p.whole->spread * d.head<3>();
+    double normal_sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double next = cs[static_cast<std::size_t>(p.first + i)].lambda_n + x(i);
+        if (next < 0.0) return false;
+        normal_sum += next;
+    }
+    const Eigen::Vector2d tangent = f.lambda_t + d.segment<2>(3);
+    const double limit = f.mu * normal_sum;
+    if (tangent.squaredNorm() > limit * limit) return false;
+    const double torsion = p.lambda_torsion + d(5);
+    if (std::abs(torsion) > limit * p.torsion_radius) return false;
+    for (int i = 0; i < n; ++i) cs[static_cast<std::size_t>(p.first + i)].lambda_n += x(i);
+    f.lambda_t = tangent;
+    p.lambda_torsion = torsion;
+    const Vec3 linear = d(0) * f.n + d(3) * f.t1 + d(4) * f.t2;
+    const Vec3 moment = d(1) * f.t1 + d(2) * f.t2 + d(5) * f.n;
+    if (!freeze_a) {
+        a.v -= a.inv_mass * linear;
+        a.w -= a.inv_inertia * (f.ra.cross(linear) + moment);
+    }
+    if (!freeze_b) {
+        b.v += b.inv_mass * linear;
+        b.w += b.inv_inertia * (f.rb.cross(linear) + moment);
+    }
+    change = std::max(error.segment<2>(3).norm(), std::abs(error(5)) * p.torsion_radius);
+    for (int i = 0; i < n; ++i) change = std::max(change, std::abs(rhs(i)));
+    return true;
+}
+
+// An island whose patches are each alone on their bodies (boxes standing apart on the floor) is
+// solved exactly by one whole solve per patch, if every one sticks. False otherwise (the patches
+// that stuck keep their impulses; the sweeps go on from there).
+bool solveAloneWhole(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, std::vector<Patch>& patches) {
+    if (!std::all_of(patches.begin(), patches.end(), [](const Patch& p) { return p.whole != nullptr; })) return false;
+    bool all = true;
+    for (Patch& p : patches) {
+        double change = 0.0;
+        all = relaxStickingPatch(wb, cs, p, !(wb[p.friction.a].inv_mass > 0.0), !(wb[p.friction.b].inv_mass > 0.0),
+                                 change) && all;
+    }
+    return all;
+}
+
 // Returns the largest relative-velocity change the patch's relaxations made [m/s]. A static body
 // is frozen too: it would only receive zero increments, and never writing it lets the patches of a
 // sweep group that share a static body run on different workers.
@@ -440,6 +605,7 @@ double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, P
     freeze_a = freeze_a || !(wb[p.friction.a].inv_mass > 0.0);
     freeze_b = freeze_b || !(wb[p.friction.b].inv_mass > 0.0);
     double change = 0.0;
+    if (relaxStickingPatch(wb, cs, p, freeze_a, freeze_b, change)) return change;
     if (!relaxNormalBlock(wb, cs, p, freeze_a, freeze_b, change)) {
         for (int i = p.first; i < p.first + p.count; ++i)
             change = std::max(change, relaxNormal(wb, cs[static_cast<std::size_t>(i)], freeze_a, freeze_b));
@@ -448,7 +614,15 @@ double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, P
     for (int i = p.first; i < p.first + p.count; ++i) normal_sum += cs[static_cast<std::size_t>(i)].lambda_n;
     change = std::max(change, relaxFriction(wb, p.friction, p.rows, normal_sum, freeze_a, freeze_b,
                                             p.tangent[static_cast<std::size_t>(freezeKey(freeze_a, freeze_b))]));
-    return std::max(change, relaxTorsion(wb, normal_sum, p, freeze_a, freeze_b));
+    change = std::max(change, relaxTorsion(wb, normal_sum, p, freeze_a, freeze_b));
+    // A patch solved whole whose friction ended on its cone slides: the whole solve is not tried
+    // again until a relaxation leaves it inside.
+    if (p.whole != nullptr) {
+        const double limit = p.friction.mu * normal_sum;
+        p.sliding = !(p.friction.lambda_t.squaredNorm() < limit * limit &&
+                      std::abs(p.lambda_torsion) < limit * p.torsion_radius);
+    }
+    return change;
 }
 
 int patchLevel(const std::vector<WorkBody>& wb, const Patch& p) {
@@ -670,7 +844,9 @@ struct SolverScratch {
     std::vector<WorkBody> wb, predicted, pv;
     std::vector<PointConstraint> cs, centroids;
     std::vector<int> first_point;   // per manifold, its first point constraint in cs (and the total)
+    std::vector<int> patches_on_body;   // per body, how many patches move it (a static body: none counted)
     std::vector<Patch> patches;
+    std::vector<WholePatch> whole;   // one per patch alone on its bodies
     std::vector<Push> pushes;
     SweepSchedule plan;
     std::array<std::vector<double>, 2> changes;
@@ -834,6 +1010,24 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
                 constraintAt(mf, static_cast<int>(m), pts[k], gaps ? mf.point_gap[k] : mf.distance);
     });
     report.points = static_cast<int>(cs.size());
+    // A patch alone on its bodies (a box standing on the floor, nothing else touching it) is
+    // solved whole: the sweeps then hold nothing else it could wait for.
+    {
+        std::vector<int>& touching = scratch.patches_on_body;
+        touching.assign(bodies.size(), 0);
+        for (const Patch& p : patches)
+            for (int body : {p.friction.a, p.friction.b})
+                if (!bodies[static_cast<std::size_t>(body)].infiniteMass()) ++touching[static_cast<std::size_t>(body)];
+        auto free_elsewhere = [&](int body) {
+            return !bodies[static_cast<std::size_t>(body)].infiniteMass() && touching[static_cast<std::size_t>(body)] > 1;
+        };
+        std::size_t alone = 0;
+        for (const Patch& p : patches) alone += !free_elsewhere(p.friction.a) && !free_elsewhere(p.friction.b);
+        scratch.whole.assign(alone, WholePatch{});
+        std::size_t next = 0;
+        for (Patch& p : patches)
+            if (!free_elsewhere(p.friction.a) && !free_elsewhere(p.friction.b)) p.whole = &scratch.whole[next++];
+    }
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         if (!bodies[i].infiniteMass()) wb[i].v += gravity * h;
     }
@@ -844,6 +1038,8 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
         for (int it = 0; it < settings.iterations; ++it) {
             for (auto& c : cs) relaxPlastic(wb, c, report.ill_conditioned);
         }
+    } else if (solveAloneWhole(wb, cs, patches)) {
+        report.sweeps = 1;   // every patch alone on its bodies, and each held whole: nothing to sweep
     } else {
         // A large cold island (most touching patches without impulses to start from: the first
         // solve of a pile) gets more sweeps: warm starting cannot help it yet, and what this solve
