@@ -3,7 +3,9 @@
 // complementarity solve: a flat box landing on four corners leaves at e times its speed without
 // turning; a rocking plate's approaching corner is stopped and nothing is pulled; random
 // frictionless patches match the active-set enumeration of the same small LCP; sticking patches
-// match the enumeration of the same problem with the centroid's friction free, and stop its slip.
+// match the enumeration of the same problem with the centroid's friction free, and stop its slip;
+// sliding patches meet the fixed point of "normal, then friction" (on the cone, pointing where the
+// stopping friction points).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -93,17 +95,19 @@ TEST(DynamicsPatchImpulse, RockingPlateIsStoppedAtTheApproachingCornerAndNothing
 
 // A box of random size and mass landing on a large box below it with 2-4 of its bottom corners:
 // the lower box moves at up to `va` m/s and turns at up to `wa` rad/s per axis, the upper one falls
-// at 0.5-1.5 m/s and turns at up to `wb`.
+// at 0.5-1.5 m/s and turns at up to `wb`. A `tall` box is narrower than it is high (a domino's
+// proportions: its friction tilts it strongly).
 struct Landing {
     RigidBody a, b;
     Vec3 h;
     std::vector<Vec3> pts;
 };
 
-Landing randomLanding(std::mt19937_64& rng, double va, double wa, double wb) {
+Landing randomLanding(std::mt19937_64& rng, double va, double wa, double wb, bool tall = false) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Landing l;
-    l.h = Vec3(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
+    l.h = tall ? Vec3(0.01 + 0.05 * std::abs(u(rng)), 0.02 + 0.08 * std::abs(u(rng)), 0.1 + 0.2 * std::abs(u(rng)))
+               : Vec3(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
     l.a = boxBody(Vec3(1, 1, 1), 3.0, at(Vec3(0, 0, -1.0 - l.h.z())), Vec3(u(rng), u(rng), u(rng)) * va,
                   Vec3(u(rng), u(rng), u(rng)) * wa);
     l.b = boxBody(l.h, 1.0 + std::abs(u(rng)), at(Vec3::Zero()), Vec3(u(rng), u(rng), -1.0 + 0.5 * u(rng)),
@@ -227,6 +231,41 @@ StickingAnswer enumerateSticking(const Eigen::MatrixXd& full, const Eigen::Vecto
     return best;
 }
 
+// A patch's rows, measured on the bodies (RigidBody::applyImpulse): each point's normal speed, then
+// the centroid's slip along t1 and t2; the columns of `full`, the change of those speeds per unit
+// normal impulse at each point, then per unit friction impulse at the centroid along t1 and t2.
+struct PatchRows {
+    Vec3 t1, t2;
+    Eigen::VectorXd u0;
+    Eigen::MatrixXd full;
+};
+
+PatchRows patchRows(const RigidBody& a, const RigidBody& b, const std::vector<Vec3>& pts, const Vec3& c, const Vec3& n) {
+    const int count = static_cast<int>(pts.size());
+    PatchRows r;
+    r.t1 = n.unitOrthogonal();
+    r.t2 = n.cross(r.t1);
+    auto speeds = [&](const RigidBody& ra, const RigidBody& rb) {
+        Eigen::VectorXd v(count + 2);
+        for (int i = 0; i < count; ++i) v(i) = normalSpeed(ra, rb, pts[static_cast<std::size_t>(i)], n);
+        const Vec3 slip = rb.pointVelocity(c) - ra.pointVelocity(c);
+        v(count) = slip.dot(r.t1);
+        v(count + 1) = slip.dot(r.t2);
+        return v;
+    };
+    r.u0 = speeds(a, b);
+    r.full.resize(count + 2, count + 2);
+    for (int j = 0; j < count + 2; ++j) {
+        const Vec3 dir = j < count ? n : (j == count ? r.t1 : r.t2);
+        const Vec3 at_point = j < count ? pts[static_cast<std::size_t>(j)] : c;
+        RigidBody a2 = a, b2 = b;
+        a2.applyImpulse(-dir, at_point);
+        b2.applyImpulse(dir, at_point);
+        r.full.col(j) = speeds(a2, b2) - r.u0;
+    }
+    return r;
+}
+
 TEST(DynamicsPatchImpulse, StickingPatchesStopTheCentroidAndMatchTheEnumeratedSolution) {
     std::mt19937_64 rng(2202);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -241,30 +280,13 @@ TEST(DynamicsPatchImpulse, StickingPatchesStopTheCentroidAndMatchTheEnumeratedSo
         Vec3 c = Vec3::Zero();
         for (const Vec3& p : pts) c += p;
         c /= static_cast<double>(count);
-        const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
         bool any_approach = false;
         for (const Vec3& p : pts) any_approach = any_approach || normalSpeed(a, b, p, n) < 0.0;
         if (!any_approach) continue;
-        // Rows: each point's normal speed, then the centroid's slip along t1 and t2; columns: a unit
-        // normal impulse at each point, then a unit friction impulse at the centroid along t1, t2.
-        auto speeds = [&](const RigidBody& ra, const RigidBody& rb) {
-            Eigen::VectorXd v(count + 2);
-            for (int i = 0; i < count; ++i) v(i) = normalSpeed(ra, rb, pts[static_cast<std::size_t>(i)], n);
-            const Vec3 slip = rb.pointVelocity(c) - ra.pointVelocity(c);
-            v(count) = slip.dot(t1);
-            v(count + 1) = slip.dot(t2);
-            return v;
-        };
-        const Eigen::VectorXd u0 = speeds(a, b);
-        Eigen::MatrixXd full(count + 2, count + 2);
-        for (int j = 0; j < count + 2; ++j) {
-            const Vec3 dir = j < count ? n : (j == count ? t1 : t2);
-            const Vec3 at_point = j < count ? pts[static_cast<std::size_t>(j)] : c;
-            RigidBody a2 = a, b2 = b;
-            a2.applyImpulse(-dir, at_point);
-            b2.applyImpulse(dir, at_point);
-            full.col(j) = speeds(a2, b2) - u0;
-        }
+        const PatchRows rows = patchRows(a, b, pts, c, n);
+        const Vec3 &t1 = rows.t1, &t2 = rows.t2;
+        const Eigen::VectorXd& u0 = rows.u0;
+        const Eigen::MatrixXd& full = rows.full;
         Eigen::VectorXd q = u0;
         for (int i = 0; i < count; ++i) q(i) -= u0(i) < 0.0 ? -e[static_cast<std::size_t>(i)] * u0(i) : 0.0;
         const StickingAnswer expect = enumerateSticking(full, q, count);
@@ -293,6 +315,60 @@ TEST(DynamicsPatchImpulse, StickingPatchesStopTheCentroidAndMatchTheEnumeratedSo
     }
     EXPECT_GT(sticking, 50);
     EXPECT_GT(sliding, 10);
+}
+
+// A sliding patch: the normal impulses are the complementarity solution given the friction, the
+// friction lies on the cone of their sum, and it points where the friction that would stop the
+// centroid's slip points (the fixed point of "normal, then friction"), each to 1e-5 of its scale,
+// measured on the bodies' speeds after the impact.
+TEST(DynamicsPatchImpulse, SlidingPatchesMeetTheFixedPointOfNormalThenFriction) {
+    std::mt19937_64 rng(2203);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int sliding = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        auto [a, b, h, pts] = randomLanding(rng, 0.2, 0.3, 2.0, trial % 2 == 0);
+        const int count = static_cast<int>(pts.size());
+        std::vector<double> e(pts.size());
+        for (double& x : e) x = 0.5 * std::abs(u(rng));
+        const double mu = 0.1 + 0.9 * std::abs(u(rng));
+        b.velocity += Vec3(3.0 * u(rng), 3.0 * u(rng), 0.0);   // a slide along the floor
+        const Vec3 n = Vec3::UnitZ();
+        Vec3 c = Vec3::Zero();
+        for (const Vec3& p : pts) c += p;
+        c /= static_cast<double>(count);
+        bool any_approach = false;
+        for (const Vec3& p : pts) any_approach = any_approach || normalSpeed(a, b, p, n) < 0.0;
+        if (!any_approach) continue;
+        const PatchRows rows = patchRows(a, b, pts, c, n);
+        Eigen::VectorXd q = rows.u0;
+        for (int i = 0; i < count; ++i) q(i) -= rows.u0(i) < 0.0 ? -e[static_cast<std::size_t>(i)] * rows.u0(i) : 0.0;
+        const StickingAnswer stuck = enumerateSticking(rows.full, q, count);
+        if (stuck.found && stuck.friction.norm() <= mu * stuck.normal.sum()) continue;   // sticks: another test
+        const PatchImpulse imp = patchImpulse(a, b, pts, c, n, e, mu);
+        ASSERT_EQ(imp.trouble, ImpulseTrouble::None) << "trial " << trial;
+        Eigen::VectorXd got(count + 2);
+        for (int i = 0; i < count; ++i) got(i) = imp.normal[static_cast<std::size_t>(i)];
+        const Eigen::Vector2d lambda(imp.tangent.dot(rows.t1), imp.tangent.dot(rows.t2));
+        got.tail<2>() = lambda;
+        const Eigen::VectorXd w = rows.full * got + q;   // speeds after, less the targets
+        const double sum = got.head(count).sum();
+        const double scale = got.head(count).cwiseAbs().maxCoeff();
+        const double speed_scale = 1.0 + q.cwiseAbs().maxCoeff();
+        for (int i = 0; i < count; ++i) {
+            EXPECT_GE(got(i), 0.0) << "trial " << trial;
+            EXPECT_GE(w(i), -1e-5 * speed_scale) << "trial " << trial << ", point " << i;
+            EXPECT_LE(std::abs(got(i) * w(i)), 1e-5 * scale * speed_scale) << "trial " << trial << ", point " << i;
+        }
+        EXPECT_NEAR(lambda.norm(), mu * sum, 1e-9 * (1.0 + sum)) << "trial " << trial;
+        // The friction that would stop the slip: lambda - kt^-1 (slip after), kt the tangential block.
+        const Eigen::Matrix2d kt = rows.full.bottomRightCorner<2, 2>();
+        const Eigen::Vector2d stop = lambda - kt.inverse() * w.tail<2>();
+        const double cross = lambda(0) * stop(1) - lambda(1) * stop(0);
+        EXPECT_LE(std::abs(cross), 1e-5 * lambda.norm() * stop.norm() + 1e-12) << "trial " << trial;
+        EXPECT_GE(lambda.dot(stop), 0.0) << "trial " << trial;
+        ++sliding;
+    }
+    EXPECT_GT(sliding, 50);
 }
 
 TEST(DynamicsPatchImpulse, OnePointAgreesWithTheSinglePointModel) {
