@@ -605,7 +605,7 @@ double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, P
     freeze_a = freeze_a || !(wb[p.friction.a].inv_mass > 0.0);
     freeze_b = freeze_b || !(wb[p.friction.b].inv_mass > 0.0);
     double change = 0.0;
-    if (relaxStickingPatch(wb, cs, p, freeze_a, freeze_b, change)) return change;
+    if (p.whole != nullptr && relaxStickingPatch(wb, cs, p, freeze_a, freeze_b, change)) return change;
     if (!relaxNormalBlock(wb, cs, p, freeze_a, freeze_b, change)) {
         for (int i = p.first; i < p.first + p.count; ++i)
             change = std::max(change, relaxNormal(wb, cs[static_cast<std::size_t>(i)], freeze_a, freeze_b));
