@@ -52,14 +52,10 @@ Case randomPatch(std::mt19937_64& rng, int count, bool collinear, bool a_static)
     return c;
 }
 
-// The minimum-norm impulses that bring each point's normal relative velocity to zero:
-// x = (J W J^T)^+ (-J u), with J the points' 12-dof normal Jacobians.
-Eigen::VectorXd referenceImpulses(const Case& c) {
-    const ContactManifold& m = c.manifold;
-    const int n = static_cast<int>(m.points.size());
-    Eigen::MatrixXd j(n, 12);
-    Eigen::VectorXd u(12);
-    Eigen::MatrixXd w = Eigen::MatrixXd::Zero(12, 12);
+// The two bodies' 12-dof velocities u and inverse mass w (a static body's: zero).
+void twoBodies(const Case& c, Eigen::VectorXd& u, Eigen::MatrixXd& w) {
+    u.resize(12);
+    w = Eigen::MatrixXd::Zero(12, 12);
     for (int k = 0; k < 2; ++k) {
         const RigidBody& b = c.bodies[static_cast<std::size_t>(k)];
         u.segment<3>(6 * k) = b.velocity;
@@ -67,6 +63,17 @@ Eigen::VectorXd referenceImpulses(const Case& c) {
         w.block<3, 3>(6 * k, 6 * k) = b.inv_mass * Mat3::Identity();
         w.block<3, 3>(6 * k + 3, 6 * k + 3) = b.is_static ? Mat3::Zero() : b.invInertiaWorld();
     }
+}
+
+// The minimum-norm impulses that bring each point's normal relative velocity to zero:
+// x = (J W J^T)^+ (-J u), with J the points' 12-dof normal Jacobians.
+Eigen::VectorXd referenceImpulses(const Case& c) {
+    const ContactManifold& m = c.manifold;
+    const int n = static_cast<int>(m.points.size());
+    Eigen::MatrixXd j(n, 12);
+    Eigen::VectorXd u;
+    Eigen::MatrixXd w;
+    twoBodies(c, u, w);
     for (int i = 0; i < n; ++i) {
         const Vec3& p = m.points[static_cast<std::size_t>(i)];
         j.block<1, 3>(i, 0) = -m.normal.transpose();
@@ -134,15 +141,9 @@ Sticking referenceSticking(const Case& c) {
     const int n = static_cast<int>(m.points.size());
     const Vec3 t1 = m.normal.unitOrthogonal(), t2 = m.normal.cross(t1);
     Eigen::MatrixXd j = Eigen::MatrixXd::Zero(n + 3, 12);
-    Eigen::VectorXd u(12);
-    Eigen::MatrixXd w = Eigen::MatrixXd::Zero(12, 12);
-    for (int k = 0; k < 2; ++k) {
-        const RigidBody& b = c.bodies[static_cast<std::size_t>(k)];
-        u.segment<3>(6 * k) = b.velocity;
-        u.segment<3>(6 * k + 3) = b.is_static ? Vec3::Zero() : b.angularVelocity();
-        w.block<3, 3>(6 * k, 6 * k) = b.inv_mass * Mat3::Identity();
-        w.block<3, 3>(6 * k + 3, 6 * k + 3) = b.is_static ? Mat3::Zero() : b.invInertiaWorld();
-    }
+    Eigen::VectorXd u;
+    Eigen::MatrixXd w;
+    twoBodies(c, u, w);
     auto along = [&](int row, const Vec3& p, const Vec3& d) {
         j.block<1, 3>(row, 0) = -d.transpose();
         j.block<1, 3>(row, 3) = -(p - c.bodies[0].com).cross(d).transpose();

@@ -233,16 +233,23 @@ StickingAnswer enumerateSticking(const Eigen::MatrixXd& full, const Eigen::Vecto
 
 // A patch's rows, measured on the bodies (RigidBody::applyImpulse): each point's normal speed, then
 // the centroid's slip along t1 and t2; the columns of `full`, the change of those speeds per unit
-// normal impulse at each point, then per unit friction impulse at the centroid along t1 and t2.
+// normal impulse at each point, then per unit friction impulse at the centroid along t1 and t2; q,
+// the speeds less the targets (an approaching point must leave at e times its approach speed).
 struct PatchRows {
-    Vec3 t1, t2;
-    Eigen::VectorXd u0;
+    Vec3 c, t1, t2;
+    Eigen::VectorXd u0, q;
     Eigen::MatrixXd full;
+    bool approaching = false;   // some point approaches: an impact
 };
 
-PatchRows patchRows(const RigidBody& a, const RigidBody& b, const std::vector<Vec3>& pts, const Vec3& c, const Vec3& n) {
+PatchRows patchRows(const RigidBody& a, const RigidBody& b, const std::vector<Vec3>& pts, const Vec3& n,
+                    const std::vector<double>& e) {
     const int count = static_cast<int>(pts.size());
     PatchRows r;
+    r.c = Vec3::Zero();
+    for (const Vec3& p : pts) r.c += p;
+    r.c /= static_cast<double>(count);
+    const Vec3& c = r.c;
     r.t1 = n.unitOrthogonal();
     r.t2 = n.cross(r.t1);
     auto speeds = [&](const RigidBody& ra, const RigidBody& rb) {
@@ -263,6 +270,11 @@ PatchRows patchRows(const RigidBody& a, const RigidBody& b, const std::vector<Ve
         b2.applyImpulse(dir, at_point);
         r.full.col(j) = speeds(a2, b2) - r.u0;
     }
+    r.q = r.u0;
+    for (int i = 0; i < count; ++i) {
+        r.approaching = r.approaching || r.u0(i) < 0.0;
+        r.q(i) -= r.u0(i) < 0.0 ? -e[static_cast<std::size_t>(i)] * r.u0(i) : 0.0;
+    }
     return r;
 }
 
@@ -277,18 +289,11 @@ TEST(DynamicsPatchImpulse, StickingPatchesStopTheCentroidAndMatchTheEnumeratedSo
         for (double& x : e) x = 0.5 * std::abs(u(rng));
         const double mu = 0.3 + 2.0 * std::abs(u(rng));
         const Vec3 n = Vec3::UnitZ();
-        Vec3 c = Vec3::Zero();
-        for (const Vec3& p : pts) c += p;
-        c /= static_cast<double>(count);
-        bool any_approach = false;
-        for (const Vec3& p : pts) any_approach = any_approach || normalSpeed(a, b, p, n) < 0.0;
-        if (!any_approach) continue;
-        const PatchRows rows = patchRows(a, b, pts, c, n);
-        const Vec3 &t1 = rows.t1, &t2 = rows.t2;
-        const Eigen::VectorXd& u0 = rows.u0;
+        const PatchRows rows = patchRows(a, b, pts, n, e);
+        if (!rows.approaching) continue;
+        const Vec3 &c = rows.c, &t1 = rows.t1, &t2 = rows.t2;
         const Eigen::MatrixXd& full = rows.full;
-        Eigen::VectorXd q = u0;
-        for (int i = 0; i < count; ++i) q(i) -= u0(i) < 0.0 ? -e[static_cast<std::size_t>(i)] * u0(i) : 0.0;
+        const Eigen::VectorXd& q = rows.q;
         const StickingAnswer expect = enumerateSticking(full, q, count);
         const PatchImpulse imp = patchImpulse(a, b, pts, c, n, e, mu);
         if (!expect.found || expect.friction.norm() > mu * expect.normal.sum() * (1.0 - 1e-9)) {
@@ -333,15 +338,10 @@ TEST(DynamicsPatchImpulse, SlidingPatchesMeetTheFixedPointOfNormalThenFriction) 
         const double mu = 0.1 + 0.9 * std::abs(u(rng));
         b.velocity += Vec3(3.0 * u(rng), 3.0 * u(rng), 0.0);   // a slide along the floor
         const Vec3 n = Vec3::UnitZ();
-        Vec3 c = Vec3::Zero();
-        for (const Vec3& p : pts) c += p;
-        c /= static_cast<double>(count);
-        bool any_approach = false;
-        for (const Vec3& p : pts) any_approach = any_approach || normalSpeed(a, b, p, n) < 0.0;
-        if (!any_approach) continue;
-        const PatchRows rows = patchRows(a, b, pts, c, n);
-        Eigen::VectorXd q = rows.u0;
-        for (int i = 0; i < count; ++i) q(i) -= rows.u0(i) < 0.0 ? -e[static_cast<std::size_t>(i)] * rows.u0(i) : 0.0;
+        const PatchRows rows = patchRows(a, b, pts, n, e);
+        if (!rows.approaching) continue;
+        const Vec3& c = rows.c;
+        const Eigen::VectorXd& q = rows.q;
         const StickingAnswer stuck = enumerateSticking(rows.full, q, count);
         if (stuck.found && stuck.friction.norm() <= mu * stuck.normal.sum()) continue;   // sticks: another test
         const PatchImpulse imp = patchImpulse(a, b, pts, c, n, e, mu);

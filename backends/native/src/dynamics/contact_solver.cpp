@@ -268,7 +268,7 @@ struct WholePatch {
         bool valid = false;
     };
     std::array<Sticking, 2> sticking;
-    Eigen::Matrix<double, 4, 3> spread;   // P = T (T^T T)^-1 (patchBlockInverse's notation)
+    Eigen::Matrix<double, 4, 3> spread;   // P = T (T^T T)^-1 (patchSpreadMap)
     int spread_state = 0;                 // 0 not computed, 1 valid, -1 collinear or fewer than 3 points
 };
 
@@ -328,6 +328,33 @@ double relaxTorsion(std::vector<WorkBody>& wb, double normal_sum, Patch& p, bool
     return std::abs(d) * k * p.torsion_radius;   // as a speed at the patch's rim
 }
 
+// The map P = T (T^T T)^-1 of a patch of 3 or 4 points, T the N x 3 matrix of rows
+// (1, s.t1, s.t2), s = (p - c) x n (c the centroid): a normal force and two tilting moments about
+// the centroid, (N, M1, M2) = T^T x, spread over the points with the least norm, x = P (N, M1, M2).
+// False for other counts or points (nearly) on a line (scale-free: the spread of the points in the
+// plane must have two directions).
+bool patchSpreadMap(const std::vector<PointConstraint>& cs, const Patch& p, Eigen::Matrix<double, 4, 3>& tp) {
+    const int n = p.count;
+    if (n < 3 || n > 4) return false;
+    const PointConstraint& f = p.friction;
+    Eigen::Matrix<double, 4, 3> t = Eigen::Matrix<double, 4, 3>::Zero();
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const Vec3 s = cs[static_cast<std::size_t>(p.first + i)].ra_n - f.ra_n;
+        t.row(i) << 1.0, s.dot(f.t1), s.dot(f.t2);
+        mean += t.row(i).tail<2>().transpose();
+    }
+    mean /= static_cast<double>(n);
+    Eigen::Matrix2d spread = Eigen::Matrix2d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d d = t.row(i).tail<2>().transpose() - mean;
+        spread += d * d.transpose();
+    }
+    if (!(spread.determinant() > 1e-8 * spread.trace() * spread.trace())) return false;
+    tp = t * (t.transpose() * t).inverse();
+    return true;
+}
+
 // The normal block of a patch in closed form. The points share the normal n, so a point's normal
 // relative velocity is an affine function of its place in the patch plane: with s_i = (p_i - c) x n
 // (c the centroid) and tau_i = (1, s_i.t1, s_i.t2), the block is M = T G T^T, T the N x 3 matrix of
@@ -338,8 +365,7 @@ double relaxTorsion(std::vector<WorkBody>& wb, double normal_sum, Patch& p, bool
 // nearly collinear or G is singular (the caller then decomposes M).
 bool patchBlockInverse(const std::vector<WorkBody>& wb, const std::vector<PointConstraint>& cs, const Patch& p,
                        bool freeze_a, bool freeze_b, Eigen::Matrix4d& inv) {
-    const int n = p.count;
-    if (n < 3) return false;
+    if (p.count < 3) return false;
     const PointConstraint& f = p.friction;
     Mat3 g = Mat3::Zero();
     auto addBody = [&](const WorkBody& body, const Vec3& e) {
@@ -350,26 +376,12 @@ bool patchBlockInverse(const std::vector<WorkBody>& wb, const std::vector<PointC
     };
     if (!freeze_a) addBody(wb[f.a], f.ra_n);
     if (!freeze_b) addBody(wb[f.b], f.rb_n);
-    Eigen::Matrix<double, 4, 3> t = Eigen::Matrix<double, 4, 3>::Zero();
-    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-    for (int i = 0; i < n; ++i) {
-        const Vec3 s = cs[static_cast<std::size_t>(p.first + i)].ra_n - f.ra_n;
-        t.row(i) << 1.0, s.dot(f.t1), s.dot(f.t2);
-        mean += t.row(i).tail<2>().transpose();
-    }
-    mean /= static_cast<double>(n);
-    // Collinearity, scale-free: the spread of the points in the plane must have two directions.
-    Eigen::Matrix2d spread = Eigen::Matrix2d::Zero();
-    for (int i = 0; i < n; ++i) {
-        const Eigen::Vector2d d = t.row(i).tail<2>().transpose() - mean;
-        spread += d * d.transpose();
-    }
-    if (!(spread.determinant() > 1e-8 * spread.trace() * spread.trace())) return false;
+    Eigen::Matrix<double, 4, 3> tp;
+    if (!patchSpreadMap(cs, p, tp)) return false;
     // G is symmetric positive definite for a free body: its inverse in closed form (cofactors; a
     // determinant that is not clearly positive sends the patch to the general path).
     const double det = g.determinant();
     if (!(det > 1e-12 * g.trace() * g.trace() * g.trace())) return false;
-    const Eigen::Matrix<double, 4, 3> tp = t * (t.transpose() * t).inverse();
     inv = tp * g.inverse() * tp.transpose();
     return inv.allFinite();
 }
@@ -448,34 +460,11 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
     return true;
 }
 
-// The points' map P = T (T^T T)^-1 of patchBlockInverse: a normal force and two tilting moments
-// about the centroid, (N, M1, M2) = T^T x, spread over the points with the least norm, x = P (N, M1, M2).
-// False for fewer than 3 points or points (nearly) on a line.
+// The patch's spread map (patchSpreadMap), computed once a solve.
 bool patchSpread(const std::vector<PointConstraint>& cs, Patch& p) {
     WholePatch& w = *p.whole;
-    if (w.spread_state != 0) return w.spread_state > 0;
-    w.spread_state = -1;
-    const int n = p.count;
-    if (n < 3 || n > 4) return false;
-    const PointConstraint& f = p.friction;
-    Eigen::Matrix<double, 4, 3> t = Eigen::Matrix<double, 4, 3>::Zero();
-    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-    for (int i = 0; i < n; ++i) {
-        const Vec3 s = cs[static_cast<std::size_t>(p.first + i)].ra_n - f.ra_n;
-        t.row(i) << 1.0, s.dot(f.t1), s.dot(f.t2);
-        mean += t.row(i).tail<2>().transpose();
-    }
-    mean /= static_cast<double>(n);
-    Eigen::Matrix2d spread = Eigen::Matrix2d::Zero();
-    for (int i = 0; i < n; ++i) {
-        const Eigen::Vector2d d = t.row(i).tail<2>().transpose() - mean;
-        spread += d * d.transpose();
-    }
-    if (!(spread.determinant() > 1e-8 * spread.trace() * spread.trace())) return false;
-    w.spread = t * (t.transpose() * t).inverse();
-    if (!w.spread.allFinite()) return false;
-    w.spread_state = 1;
-    return true;
+    if (w.spread_state == 0) w.spread_state = patchSpreadMap(cs, p, w.spread) && w.spread.allFinite() ? 1 : -1;
+    return w.spread_state > 0;
 }
 
 // The factor of the patch's 6 x 6 mass at its centroid in the frame (n, t1, t2): the relative
