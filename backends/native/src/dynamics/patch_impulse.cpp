@@ -198,11 +198,6 @@ struct Side {
         }
     }
     Vec3 at(const Vec3& p) const { return v + w.cross(p - com); }
-    void push(const Vec3& j, const Vec3& p) {   // impulse j at p
-        if (!moves) return;
-        v += inv_mass * j;
-        w += inv_inertia * (p - com).cross(j);
-    }
 };
 
 }  // namespace
@@ -332,13 +327,14 @@ PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<cons
     // leaves the fixed point unchanged.
     BlockVector y = BlockVector::Zero();
     Eigen::Vector2d f_prev = Eigen::Vector2d::Zero(), g_prev = Eigen::Vector2d::Zero();
-    Eigen::Vector2d f_now = lambda;
+    Eigen::Vector2d f_now = Eigen::Vector2d::Zero();   // F at the last evaluation: the friction that goes with y
     for (int pass = 0; pass < kMaxPasses; ++pass) {
-        y = solveNormalLcp(m, q0 + mnt * lambda, count);
-        if (!y.allFinite()) {
+        const BlockVector next_y = solveNormalLcp(m, q0 + mnt * lambda, count);
+        if (!next_y.allFinite()) {   // the last finite pair stands
             out.trouble = ImpulseTrouble::IllConditioned;
             break;
         }
+        y = next_y;
         f_now = stopping(y);
         const double limit = friction * total(y);
         if (f_now.norm() > limit) f_now *= f_now.norm() > 0.0 ? limit / f_now.norm() : 0.0;
