@@ -3,9 +3,7 @@
 // complementarity solve: a flat box landing on four corners leaves at e times its speed without
 // turning; a rocking plate's approaching corner is stopped and nothing is pulled; random
 // frictionless patches match the active-set enumeration of the same small LCP; sticking patches
-// match the enumeration of the same problem with the centroid's friction free, and stop its slip;
-// sliding patches meet the fixed point of "normal, then friction" (on the cone, pointing where the
-// stopping friction points).
+// match the enumeration of the same problem with the centroid's friction free, and stop its slip.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -95,19 +93,17 @@ TEST(DynamicsPatchImpulse, RockingPlateIsStoppedAtTheApproachingCornerAndNothing
 
 // A box of random size and mass landing on a large box below it with 2-4 of its bottom corners:
 // the lower box moves at up to `va` m/s and turns at up to `wa` rad/s per axis, the upper one falls
-// at 0.5-1.5 m/s and turns at up to `wb`. A `tall` box is narrower than it is high (a domino's
-// proportions: its friction tilts it strongly).
+// at 0.5-1.5 m/s and turns at up to `wb`.
 struct Landing {
     RigidBody a, b;
     Vec3 h;
     std::vector<Vec3> pts;
 };
 
-Landing randomLanding(std::mt19937_64& rng, double va, double wa, double wb, bool tall = false) {
+Landing randomLanding(std::mt19937_64& rng, double va, double wa, double wb) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Landing l;
-    l.h = tall ? Vec3(0.01 + 0.05 * std::abs(u(rng)), 0.02 + 0.08 * std::abs(u(rng)), 0.1 + 0.2 * std::abs(u(rng)))
-               : Vec3(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
+    l.h = Vec3(0.1 + 0.3 * std::abs(u(rng)), 0.1 + 0.3 * std::abs(u(rng)), 0.05 + 0.2 * std::abs(u(rng)));
     l.a = boxBody(Vec3(1, 1, 1), 3.0, at(Vec3(0, 0, -1.0 - l.h.z())), Vec3(u(rng), u(rng), u(rng)) * va,
                   Vec3(u(rng), u(rng), u(rng)) * wa);
     l.b = boxBody(l.h, 1.0 + std::abs(u(rng)), at(Vec3::Zero()), Vec3(u(rng), u(rng), -1.0 + 0.5 * u(rng)),
@@ -320,55 +316,6 @@ TEST(DynamicsPatchImpulse, StickingPatchesStopTheCentroidAndMatchTheEnumeratedSo
     }
     EXPECT_GT(sticking, 50);
     EXPECT_GT(sliding, 10);
-}
-
-// A sliding patch: the normal impulses are the complementarity solution given the friction, the
-// friction lies on the cone of their sum, and it points where the friction that would stop the
-// centroid's slip points (the fixed point of "normal, then friction"), each to 1e-5 of its scale,
-// measured on the bodies' speeds after the impact.
-TEST(DynamicsPatchImpulse, SlidingPatchesMeetTheFixedPointOfNormalThenFriction) {
-    std::mt19937_64 rng(2203);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    int sliding = 0;
-    for (int trial = 0; trial < 300; ++trial) {
-        auto [a, b, h, pts] = randomLanding(rng, 0.2, 0.3, 2.0, trial % 2 == 0);
-        const int count = static_cast<int>(pts.size());
-        std::vector<double> e(pts.size());
-        for (double& x : e) x = 0.5 * std::abs(u(rng));
-        const double mu = 0.1 + 0.9 * std::abs(u(rng));
-        b.velocity += Vec3(3.0 * u(rng), 3.0 * u(rng), 0.0);   // a slide along the floor
-        const Vec3 n = Vec3::UnitZ();
-        const PatchRows rows = patchRows(a, b, pts, n, e);
-        if (!rows.approaching) continue;
-        const Vec3& c = rows.c;
-        const Eigen::VectorXd& q = rows.q;
-        const StickingAnswer stuck = enumerateSticking(rows.full, q, count);
-        if (stuck.found && stuck.friction.norm() <= mu * stuck.normal.sum()) continue;   // sticks: another test
-        const PatchImpulse imp = patchImpulse(a, b, pts, c, n, e, mu);
-        ASSERT_EQ(imp.trouble, ImpulseTrouble::None) << "trial " << trial;
-        Eigen::VectorXd got(count + 2);
-        for (int i = 0; i < count; ++i) got(i) = imp.normal[static_cast<std::size_t>(i)];
-        const Eigen::Vector2d lambda(imp.tangent.dot(rows.t1), imp.tangent.dot(rows.t2));
-        got.tail<2>() = lambda;
-        const Eigen::VectorXd w = rows.full * got + q;   // speeds after, less the targets
-        const double sum = got.head(count).sum();
-        const double scale = got.head(count).cwiseAbs().maxCoeff();
-        const double speed_scale = 1.0 + q.cwiseAbs().maxCoeff();
-        for (int i = 0; i < count; ++i) {
-            EXPECT_GE(got(i), 0.0) << "trial " << trial;
-            EXPECT_GE(w(i), -1e-5 * speed_scale) << "trial " << trial << ", point " << i;
-            EXPECT_LE(std::abs(got(i) * w(i)), 1e-5 * scale * speed_scale) << "trial " << trial << ", point " << i;
-        }
-        EXPECT_NEAR(lambda.norm(), mu * sum, 1e-9 * (1.0 + sum)) << "trial " << trial;
-        // The friction that would stop the slip: lambda - kt^-1 (slip after), kt the tangential block.
-        const Eigen::Matrix2d kt = rows.full.bottomRightCorner<2, 2>();
-        const Eigen::Vector2d stop = lambda - kt.inverse() * w.tail<2>();
-        const double cross = lambda(0) * stop(1) - lambda(1) * stop(0);
-        EXPECT_LE(std::abs(cross), 1e-5 * lambda.norm() * stop.norm() + 1e-12) << "trial " << trial;
-        EXPECT_GE(lambda.dot(stop), 0.0) << "trial " << trial;
-        ++sliding;
-    }
-    EXPECT_GT(sliding, 50);
 }
 
 TEST(DynamicsPatchImpulse, OnePointAgreesWithTheSinglePointModel) {

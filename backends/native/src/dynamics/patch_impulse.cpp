@@ -11,9 +11,9 @@
 namespace vroc::native {
 namespace {
 
-// A sliding patch's friction is a fixed point (patchImpulse): each evaluation of its map solves the
-// normal impulses exactly (the complementarity problem below) given a friction impulse; one that
-// moves the friction by no more than kRelativeChange of the largest normal impulse ends it.
+// Passes over the patch: the normal impulses exactly (the complementarity problem below), then the
+// friction impulse; a pass that changes no impulse by more than kRelativeChange of the largest one
+// ends it. Without friction the first pass is the answer.
 constexpr int kMaxPasses = 8;
 constexpr double kRelativeChange = 1e-6;
 constexpr int kMaxPoints = kMaxPatchPoints;
@@ -198,6 +198,11 @@ struct Side {
         }
     }
     Vec3 at(const Vec3& p) const { return v + w.cross(p - com); }
+    void push(const Vec3& j, const Vec3& p) {   // impulse j at p
+        if (!moves) return;
+        v += inv_mass * j;
+        w += inv_inertia * (p - com).cross(j);
+    }
 };
 
 }  // namespace
@@ -259,99 +264,92 @@ PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<cons
     const Eigen::Matrix2d kt = tangentMass();
     const bool friction_ok = friction > 0.0 && kt.determinant() > 0.0;
     const Eigen::Matrix2d kt_inv = friction_ok ? Eigen::Matrix2d(kt.inverse()) : Eigen::Matrix2d::Zero();
-    // Normal speeds before the impact, less the targets: the complementarity problem's q without friction.
-    BlockVector q0 = BlockVector::Zero();
-    for (int i = 0; i < count; ++i) q0(i) = normalSpeed(i) - target(i);
-    auto writeNormal = [&](const BlockVector& y) {
-        for (int i = 0; i < count; ++i) out.normal[static_cast<std::size_t>(i)] = y(i);
-    };
-    if (!friction_ok) {   // the normal problem alone: one complementarity solve
-        const BlockVector y = solveNormalLcp(m, q0, count);
-        if (!y.allFinite()) {
-            out.trouble = ImpulseTrouble::IllConditioned;
-            return out;
-        }
-        writeNormal(y);
-        return out;
-    }
-    const Vec3 slip = sb.at(centroid) - sa.at(centroid);
-    const Eigen::Vector2d qt(slip.dot(t1), slip.dot(t2));
-    const Vec3 ca = centroid - sa.com, cb = centroid - sb.com;
-    const std::array<Vec3, 2> spin_a{ca.cross(t1), ca.cross(t2)}, spin_b{cb.cross(t1), cb.cross(t2)};
-    // M_nt(i, k): the normal speed change at point i per unit friction impulse along t_k (and, the
-    // patch's mass matrix being symmetric, the slip change along t_k per unit normal impulse at i).
-    Eigen::Matrix<double, kMaxPoints, 2> mnt = Eigen::Matrix<double, kMaxPoints, 2>::Zero();
-    for (int i = 0; i < count; ++i)
-        for (int k = 0; k < 2; ++k)
-            mnt(i, k) = turn_a[static_cast<std::size_t>(i)].dot(spin_a[static_cast<std::size_t>(k)]) +
-                        turn_b[static_cast<std::size_t>(i)].dot(spin_b[static_cast<std::size_t>(k)]);
-    // The friction that stops the centroid's slip given normal impulses y: -kt^-1 (u_t + M_tn y).
-    auto stopping = [&](const BlockVector& y) {
-        Eigen::Vector2d pressed = qt;
-        for (int j = 0; j < count; ++j) pressed += y(j) * mnt.row(j).transpose();
-        return Eigen::Vector2d(-kt_inv * pressed);
-    };
-    auto total = [&](const BlockVector& y) { return y.head(count).sum(); };
     // Sticking, solved at once: with the centroid's slip stopped, the friction impulse is a linear
     // function of the normal ones, lambda = -kt^-1 (u_t + M_tn y), and what remains is the normal
     // problem on the Schur complement S = M - M_nt kt^-1 M_tn (positive semi-definite, as the whole
     // patch's mass matrix is): one complementarity solve. If its friction lies inside the cone, it
-    // is the answer (the fixed point of the sliding iteration below, exactly).
-    Eigen::Vector2d lambda = Eigen::Vector2d::Zero();
-    {
+    // is the alternation's fixed point below, exactly (the alternation crept to it: six passes on
+    // average, half of them stopping at the cap short of it, in a turning drum). Else the patch
+    // slides, and the alternation finds where on the cone.
+    if (friction_ok) {
+        const Vec3 slip = sb.at(centroid) - sa.at(centroid);
+        const Eigen::Vector2d qt(slip.dot(t1), slip.dot(t2));
+        const Vec3 ca = centroid - sa.com, cb = centroid - sb.com;
+        const std::array<Vec3, 2> spin_a{ca.cross(t1), ca.cross(t2)}, spin_b{cb.cross(t1), cb.cross(t2)};
+        // M_nt(i, k): the normal speed change at point i per unit friction impulse along t_k.
+        Eigen::Matrix<double, kMaxPoints, 2> mnt = Eigen::Matrix<double, kMaxPoints, 2>::Zero();
+        for (int i = 0; i < count; ++i)
+            for (int k = 0; k < 2; ++k)
+                mnt(i, k) = turn_a[static_cast<std::size_t>(i)].dot(spin_a[static_cast<std::size_t>(k)]) +
+                            turn_b[static_cast<std::size_t>(i)].dot(spin_b[static_cast<std::size_t>(k)]);
         const Eigen::Matrix<double, kMaxPoints, 2> mnt_kt = mnt * kt_inv;
         Block schur = Block::Zero();
         BlockVector q = BlockVector::Zero();
         for (int i = 0; i < count; ++i) {
-            q(i) = q0(i) - mnt_kt.row(i).dot(qt);
+            q(i) = normalSpeed(i) - target(i) - mnt_kt.row(i).dot(qt);
             for (int j = 0; j < count; ++j) schur(i, j) = m(i, j) - mnt_kt.row(i).dot(mnt.row(j));
         }
         const BlockVector y = solveNormalLcp(schur, q, count);
         if (y.allFinite()) {
-            const Eigen::Vector2d stick = stopping(y);
-            const double limit = friction * total(y);
-            if (stick.allFinite() && stick.norm() <= limit) {
-                writeNormal(y);
-                out.tangent = stick(0) * t1 + stick(1) * t2;
+            Eigen::Vector2d pressed = qt;
+            double sum = 0.0;
+            for (int j = 0; j < count; ++j) {
+                pressed += y(j) * mnt.row(j).transpose();
+                sum += y(j);
+            }
+            const Eigen::Vector2d lambda = -kt_inv * pressed;
+            if (lambda.allFinite() && lambda.norm() <= friction * sum) {
+                for (int i = 0; i < count; ++i) out.normal[static_cast<std::size_t>(i)] = y(i);
+                out.tangent = lambda(0) * t1 + lambda(1) * t2;
                 return out;
             }
-            // It slides: start where the sticking answer meets the cone.
-            if (stick.allFinite() && stick.norm() > 0.0) lambda = stick * (limit / stick.norm());
         }
     }
-    // Sliding: the friction lambda is the fixed point of lambda -> F(lambda), the stopping friction
-    // of the normal impulses y(lambda) (the complementarity solution with lambda applied) brought
-    // onto the cone of their sum. Iterating F alone (normal, then friction, and again) crept to it:
-    // most patches of a turning drum stopped at the pass cap short of it. Each step here mixes the
-    // last two values of F by the Anderson rule (for this two-dimensional map, a secant step), which
-    // leaves the fixed point unchanged.
-    BlockVector y = BlockVector::Zero();
-    Eigen::Vector2d f_prev = Eigen::Vector2d::Zero(), g_prev = Eigen::Vector2d::Zero();
-    Eigen::Vector2d f_now = Eigen::Vector2d::Zero();   // F at the last evaluation: the friction that goes with y
+    Eigen::Vector2d lambda_t = Eigen::Vector2d::Zero();
+    auto pushNormal = [&](int i, double d) {
+        const Vec3 j = d * n;
+        sa.push(-j, points[static_cast<std::size_t>(i)]);
+        sb.push(j, points[static_cast<std::size_t>(i)]);
+        out.normal[static_cast<std::size_t>(i)] += d;
+    };
     for (int pass = 0; pass < kMaxPasses; ++pass) {
-        const BlockVector next_y = solveNormalLcp(m, q0 + mnt * lambda, count);
-        if (!next_y.allFinite()) {   // the last finite pair stands
+        double change = 0.0;
+        // Normal: the exact complementarity solution given the friction impulse so far, for the
+        // totals y (w = u + M (y - lambda) - target = M y + q).
+        BlockVector lambda = BlockVector::Zero();
+        for (int i = 0; i < count; ++i) lambda(i) = out.normal[static_cast<std::size_t>(i)];
+        BlockVector q = BlockVector::Zero();
+        for (int i = 0; i < count; ++i) q(i) = normalSpeed(i) - target(i);
+        q -= residual(m, lambda, BlockVector::Zero(), count);
+        const BlockVector y = solveNormalLcp(m, q, count);
+        if (!y.allFinite()) {
             out.trouble = ImpulseTrouble::IllConditioned;
             break;
         }
-        y = next_y;
-        f_now = stopping(y);
-        const double limit = friction * total(y);
-        if (f_now.norm() > limit) f_now *= f_now.norm() > 0.0 ? limit / f_now.norm() : 0.0;
-        const Eigen::Vector2d g = f_now - lambda;
-        if (!(g.norm() > kRelativeChange * y.head(count).maxCoeff())) break;
-        Eigen::Vector2d next = f_now;
-        if (pass > 0) {
-            const Eigen::Vector2d dg = g - g_prev;
-            const double dd = dg.squaredNorm();
-            if (dd > 0.0) next = f_now - (g.dot(dg) / dd) * (f_now - f_prev);
+        for (int i = 0; i < count; ++i) {
+            const double d = y(i) - lambda(i);
+            change = std::max(change, std::abs(d));
+            pushNormal(i, d);
         }
-        f_prev = f_now;
-        g_prev = g;
-        lambda = next.allFinite() ? next : f_now;
+        // Friction: stop the centroid's slip inside the cone of the summed normal impulses.
+        if (friction_ok) {
+            double sum = 0.0;
+            for (double x : out.normal) sum += x;
+            const Vec3 u = sb.at(centroid) - sa.at(centroid);
+            Eigen::Vector2d cand = lambda_t - kt_inv * Eigen::Vector2d(u.dot(t1), u.dot(t2));
+            const double limit = friction * sum;
+            if (cand.norm() > limit) cand *= cand.norm() > 0.0 ? limit / cand.norm() : 0.0;
+            const Eigen::Vector2d d = cand - lambda_t;
+            lambda_t = cand;
+            const Vec3 j = d(0) * t1 + d(1) * t2;
+            sa.push(-j, centroid);
+            sb.push(j, centroid);
+            change = std::max(change, d.norm());
+        }
+        double scale = 0.0;
+        for (double x : out.normal) scale = std::max(scale, x);
+        if (!(change > kRelativeChange * scale)) break;
     }
-    writeNormal(y);
-    const Eigen::Vector2d lambda_t = f_now;
     out.tangent = lambda_t(0) * t1 + lambda_t(1) * t2;
     for (double x : out.normal)
         if (!std::isfinite(x)) out.trouble = ImpulseTrouble::IllConditioned;
