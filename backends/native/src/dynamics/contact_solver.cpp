@@ -143,6 +143,13 @@ FrictionRows frictionRows(const std::vector<WorkBody>& wb, const PointConstraint
     return r;
 }
 
+// The pair's slip at a patch's centroid along t1 and t2.
+Eigen::Vector2d centroidSlip(const WorkBody& a, const WorkBody& b, const PointConstraint& f, const FrictionRows& rows) {
+    const Vec3 dv = b.v - a.v;
+    return {f.t1.dot(dv) + b.w.dot(rows.t1.rb) - a.w.dot(rows.t1.ra),
+            f.t2.dot(dv) + b.w.dot(rows.t2.rb) - a.w.dot(rows.t2.ra)};
+}
+
 double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const FrictionRows& rows, double normal_sum,
                      bool freeze_a, bool freeze_b, TangentMass& tm) {
     if (f.mu <= 0.0) return 0.0;
@@ -170,9 +177,7 @@ double relaxFriction(std::vector<WorkBody>& wb, PointConstraint& f, const Fricti
         tm.cached = true;
     }
     if (!tm.valid) return 0.0;
-    const Vec3 dv = b.v - a.v;
-    const Eigen::Vector2d ut(f.t1.dot(dv) + b.w.dot(rows.t1.rb) - a.w.dot(rows.t1.ra),
-                             f.t2.dot(dv) + b.w.dot(rows.t2.rb) - a.w.dot(rows.t2.ra));
+    const Eigen::Vector2d ut = centroidSlip(a, b, f, rows);
     Eigen::Vector2d cand = f.lambda_t - tm.inverse * ut;
     const double limit = f.mu * normal_sum;
     const double len2 = cand.squaredNorm();
@@ -415,6 +420,19 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
     pseudoInverseInto(n, m, inv);
 }
 
+// What each of a patch's points lacks of its target normal speed (zero beyond its count). The points
+// share the normal: n.u_i = n.(v_b - v_a) + w_b.(r_bi x n) - w_a.(r_ai x n).
+Eigen::Vector4d normalErrors(const WorkBody& a, const WorkBody& b, const std::vector<PointConstraint>& cs,
+                             const Patch& p) {
+    const double un_lin = p.friction.n.dot(b.v - a.v);
+    Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+    for (int i = 0; i < p.count; ++i) {
+        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
+        rhs(i) = ci.target - (un_lin + b.w.dot(ci.rb_n) - a.w.dot(ci.ra_n));
+    }
+    return rhs;
+}
+
 bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, Patch& p,
                       bool freeze_a, bool freeze_b, double& change) {
     const int n = p.count;
@@ -424,17 +442,11 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
         factorNormalBlock(wb, cs, p, freeze_a, freeze_b);
         p.block_cached[key] = true;
     }
-    // The patch's points share the normal: n.u_i = n.(v_b - v_a) + w_b.(r_bi x n) - w_a.(r_ai x n),
-    // and the increments apply as one net impulse and one net moment per body.
+    // The increments apply as one net impulse and one net moment per body.
     WorkBody& a = wb[p.friction.a];
     WorkBody& b = wb[p.friction.b];
     const Vec3& normal = p.friction.n;
-    const double un_lin = normal.dot(b.v - a.v);
-    Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
-    for (int i = 0; i < n; ++i) {
-        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
-        rhs(i) = ci.target - (un_lin + b.w.dot(ci.rb_n) - a.w.dot(ci.ra_n));
-    }
+    const Eigen::Vector4d rhs = normalErrors(a, b, cs, p);
     const Eigen::Vector4d x = p.block[key] * rhs;
     if (!x.allFinite()) return false;
     for (int i = 0; i < n; ++i)
@@ -498,10 +510,11 @@ const Eigen::LLT<Eigen::Matrix<double, 6, 6>>* stickingFactor(const std::vector<
     // Into the patch frame, in the solve's order: (lin n, ang t1, ang t2, lin t1, lin t2, ang n).
     const std::array<Vec3, 6> axis{f.n, f.t1, f.t2, f.t1, f.t2, f.n};
     const std::array<bool, 6> angular{false, true, true, false, false, true};
+    const Mat3 lm = ml.transpose();
     Eigen::Matrix<double, 6, 6> k;
     for (std::size_t i = 0; i < 6; ++i)
         for (std::size_t j = 0; j <= i; ++j) {
-            const Mat3& block = angular[i] ? (angular[j] ? mm : ml) : (angular[j] ? Mat3(ml.transpose()) : ll);
+            const Mat3& block = angular[i] ? (angular[j] ? mm : ml) : (angular[j] ? lm : ll);
             k(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = axis[i].dot(block * axis[j]);
             k(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) = k(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
         }
@@ -527,19 +540,11 @@ bool relaxStickingPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>&
     WorkBody& a = wb[f.a];
     WorkBody& b = wb[f.b];
     const int n = p.count;
-    const double un_lin = f.n.dot(b.v - a.v);
-    Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
-    for (int i = 0; i < n; ++i) {
-        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
-        rhs(i) = ci.target - (un_lin + b.w.dot(ci.rb_n) - a.w.dot(ci.ra_n));
-    }
-    const Vec3 dv = b.v - a.v;
-    const Vec3 spin = b.w - a.w;
+    const Eigen::Vector4d rhs = normalErrors(a, b, cs, p);
     Eigen::Matrix<double, 6, 1> error;
     error.head<3>() = p.whole->spread.transpose() * rhs;   // least squares: rhs ~ T (dN, dM1, dM2) velocities
-    error(3) = -(f.t1.dot(dv) + b.w.dot(p.rows.t1.rb) - a.w.dot(p.rows.t1.ra));
-    error(4) = -(f.t2.dot(dv) + b.w.dot(p.rows.t2.rb) - a.w.dot(p.rows.t2.ra));
-    error(5) = -spin.dot(f.n);
+    error.segment<2>(3) = -centroidSlip(a, b, f, p.rows);
+    error(5) = -(b.w - a.w).dot(f.n);
     const Eigen::Matrix<double, 6, 1> d = factor->solve(error);
     if (!d.allFinite()) return false;
     const Eigen::Vector4d x = p.whole->spread * d.head<3>();
