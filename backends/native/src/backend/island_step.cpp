@@ -596,7 +596,7 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
         return false;
     }
     if (!imp.any()) return false;
-    applyPatchImpulse(a, b, points, m.centroid, m.normal, imp);
+    applyPatchImpulse(a, b, points, m.normal, imp);
     for (RigidBody* body : {&a, &b})
         if (!body->infiniteMass()) impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
     for (double x : imp.normal) m.collision_impulse += x;

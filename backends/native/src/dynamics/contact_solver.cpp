@@ -144,7 +144,8 @@ FrictionRows frictionRows(const std::vector<WorkBody>& wb, const PointConstraint
 }
 
 // The pair's slip at a patch's centroid along t1 and t2.
-Eigen::Vector2d centroidSlip(const WorkBody& a, const WorkBody& b, const PointConstraint& f, const FrictionRows& rows) {
+[[gnu::always_inline]] inline Eigen::Vector2d centroidSlip(const WorkBody& a, const WorkBody& b, const PointConstraint& f,
+                                                           const FrictionRows& rows) {
     const Vec3 dv = b.v - a.v;
     return {f.t1.dot(dv) + b.w.dot(rows.t1.rb) - a.w.dot(rows.t1.ra),
             f.t2.dot(dv) + b.w.dot(rows.t2.rb) - a.w.dot(rows.t2.ra)};
@@ -422,12 +423,13 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
 
 // What each of a patch's points lacks of its target normal speed (zero beyond its count). The points
 // share the normal: n.u_i = n.(v_b - v_a) + w_b.(r_bi x n) - w_a.(r_ai x n).
-Eigen::Vector4d normalErrors(const WorkBody& a, const WorkBody& b, const std::vector<PointConstraint>& cs,
-                             const Patch& p) {
+[[gnu::always_inline]] inline Eigen::Vector4d normalErrors(const WorkBody& a, const WorkBody& b,
+                                                           const std::vector<PointConstraint>& cs, const Patch& p) {
     const double un_lin = p.friction.n.dot(b.v - a.v);
     Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+    const PointConstraint* c = cs.data() + p.first;
     for (int i = 0; i < p.count; ++i) {
-        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
+        const PointConstraint& ci = c[i];
         rhs(i) = ci.target - (un_lin + b.w.dot(ci.rb_n) - a.w.dot(ci.ra_n));
     }
     return rhs;
