@@ -25,6 +25,7 @@ struct CollisionPhaseReport {
 /// cache line of its own.
 struct alignas(64) CollisionTally {
     std::uint64_t ill_conditioned = 0, degenerate = 0, nonfinite = 0;
+    double fastest = 0.0;   ///< [m/s] the fastest approach an impulse met in this sweep
 };
 
 /// Most workers that share one collision phase (more: one worker runs it).

@@ -499,20 +499,30 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
             settings_.response == ResponseModel::Vroc1995
                 ? vroc1995Impulse(a, b, m.centroid, m.normal, e)
                 : newtonCoulombImpulse(a, b, m.centroid, m.normal, e, m.friction);
-        return applyPointImpulse(r, m.centroid, a, b, m, report.impulsed, tally);
+        if (!applyPointImpulse(r, m.centroid, a, b, m, report.impulsed, tally)) return false;
+        tally.fastest = std::max(tally.fastest, -un);
+        return true;
     };
     auto addTally = [&report](const CollisionTally& t) {
         report.ill_conditioned += t.ill_conditioned;
         report.degenerate += t.degenerate;
         report.nonfinite += t.nonfinite;
     };
+    // Sweeps until one applies no impulse: collision_iterations at most, more (up to
+    // collisionBlowIterations) while a sweep's fastest impulse met a blow, an approach faster than
+    // gravity adds in a tick. Whether another sweep follows one whose fastest impulse met `fastest`:
     const int sweeps = settings_.collision_iterations;
+    const int hard = settings_.collisionBlowIterations();
+    auto again = [&](int sweep, double fastest) {
+        return fastest > 0.0 && (sweep + 1 < sweeps || (sweep + 1 < hard && fastest > resting_speed));
+    };
     if (workers <= 1 || workers > kMaxCollisionTeam || manifolds.size() < kTeamManifolds) {
         CollisionTally tally;
-        for (int sweep = 0; sweep < sweeps; ++sweep) {
+        for (int sweep = 0; sweep < hard; ++sweep) {
+            tally.fastest = 0.0;
             bool any = false;
             for (std::size_t k = 0; k < manifolds.size(); ++k) any = collide(k, tally) || any;
-            if (!any) break;
+            if (!any || !again(sweep, tally.fastest)) break;
         }
         addTally(tally);
         return;
@@ -523,22 +533,24 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
     std::array<CollisionTally, kMaxCollisionTeam> tallies{};
     // Whether a worker applied an impulse, per sweep parity: a worker clears its flag for sweep s
     // only after every worker has read the flags of sweep s - 2 (a wave's barrier lies between).
-    std::array<std::array<std::uint8_t, kMaxCollisionTeam>, 2> applied{};
+    std::array<std::array<double, kMaxCollisionTeam>, 2> applied{};
     SpinBarrier barrier(workers);
     const auto team = static_cast<std::size_t>(workers);
     auto share = [&](std::size_t w) {
         CollisionTally& tally = tallies[w];
-        for (int sweep = 0; sweep < sweeps; ++sweep) {
-            std::uint8_t& mine = applied[static_cast<std::size_t>(sweep % 2)][w];
-            mine = 0;
+        for (int sweep = 0; sweep < hard; ++sweep) {
+            double& mine = applied[static_cast<std::size_t>(sweep % 2)][w];
+            mine = 0.0;
             for (std::size_t wave = 0; wave < waves.waves(); ++wave) {
                 const std::size_t begin = waves.begin[wave], size = waves.begin[wave + 1] - begin;
-                for (std::size_t i = begin + size * w / team; i < begin + size * (w + 1) / team; ++i)
-                    if (collide(static_cast<std::size_t>(waves.order[i]), tally)) mine = 1;
+                for (std::size_t i = begin + size * w / team; i < begin + size * (w + 1) / team; ++i) {
+                    tally.fastest = 0.0;
+                    if (collide(static_cast<std::size_t>(waves.order[i]), tally)) mine = std::max(mine, tally.fastest);
+                }
                 barrier.arriveAndWait();
             }
             const auto& flags = applied[static_cast<std::size_t>(sweep % 2)];
-            if (std::none_of(flags.begin(), flags.begin() + workers, [](std::uint8_t f) { return f != 0; })) break;
+            if (!again(sweep, *std::max_element(flags.begin(), flags.begin() + workers))) break;
         }
     };
     // One reference captured: std::function stores it in place (no allocation per solve).
@@ -585,7 +597,9 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
     const std::span<const double> restitution(selected_restitution.data(), selected_restitution.size());
     if (points.size() == 1) {   // one point: the coupled sticking / sliding impulse there
         const ImpulseResult r = newtonCoulombImpulse(a, b, points[0], m.normal, restitution[0], m.friction);
-        return applyPointImpulse(r, points[0], a, b, m, impulsed, tally);
+        if (!applyPointImpulse(r, points[0], a, b, m, impulsed, tally)) return false;
+        tally.fastest = std::max(tally.fastest, fastest);
+        return true;
     }
     const PatchImpulse imp = patchImpulse(a, b, points, m.centroid, m.normal, restitution, m.friction);
     if (imp.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
@@ -596,6 +610,7 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
         return false;
     }
     if (!imp.any()) return false;
+    tally.fastest = std::max(tally.fastest, fastest);
     applyPatchImpulse(a, b, points, m.normal, imp);
     for (RigidBody* body : {&a, &b})
         if (!body->infiniteMass()) impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
