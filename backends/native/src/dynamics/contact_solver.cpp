@@ -423,13 +423,14 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
 
 // What each of a patch's points lacks of its target normal speed (zero beyond its count). The points
 // share the normal: n.u_i = n.(v_b - v_a) + w_b.(r_bi x n) - w_a.(r_ai x n).
+// `count` is the patch's (passed in, so that a caller's check of its range reaches the loop).
 [[gnu::always_inline]] inline Eigen::Vector4d normalErrors(const WorkBody& a, const WorkBody& b,
-                                                           const std::vector<PointConstraint>& cs, const Patch& p) {
+                                                           const std::vector<PointConstraint>& cs, const Patch& p,
+                                                           int count) {
     const double un_lin = p.friction.n.dot(b.v - a.v);
     Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
-    const PointConstraint* c = cs.data() + p.first;
-    for (int i = 0; i < p.count; ++i) {
-        const PointConstraint& ci = c[i];
+    for (int i = 0; i < count; ++i) {
+        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
         rhs(i) = ci.target - (un_lin + b.w.dot(ci.rb_n) - a.w.dot(ci.ra_n));
     }
     return rhs;
@@ -448,7 +449,7 @@ bool relaxNormalBlock(std::vector<WorkBody>& wb, std::vector<PointConstraint>& c
     WorkBody& a = wb[p.friction.a];
     WorkBody& b = wb[p.friction.b];
     const Vec3& normal = p.friction.n;
-    const Eigen::Vector4d rhs = normalErrors(a, b, cs, p);
+    const Eigen::Vector4d rhs = normalErrors(a, b, cs, p, n);
     const Eigen::Vector4d x = p.block[key] * rhs;
     if (!x.allFinite()) return false;
     for (int i = 0; i < n; ++i)
@@ -542,7 +543,7 @@ bool relaxStickingPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>&
     WorkBody& a = wb[f.a];
     WorkBody& b = wb[f.b];
     const int n = p.count;
-    const Eigen::Vector4d rhs = normalErrors(a, b, cs, p);
+    const Eigen::Vector4d rhs = normalErrors(a, b, cs, p, n);
     Eigen::Matrix<double, 6, 1> error;
     error.head<3>() = p.whole->spread.transpose() * rhs;   // least squares: rhs ~ T (dN, dM1, dM2) velocities
     error.segment<2>(3) = -centroidSlip(a, b, f, p.rows);
