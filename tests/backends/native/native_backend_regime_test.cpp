@@ -90,6 +90,16 @@ TEST(NativeRegimes, HeldBodiesNeedNoStepsBetweenTheirTicks) {
     EXPECT_GE(steps[1], steps[0]);
 }
 
+// Steps `frames` frames; the deepest overlap of neighbours in the row meanwhile (rowOverlap).
+double deepestRowOverlap(Backend& be, const Scene& s, const std::vector<int>& row, double half, int frames) {
+    double overlap = 0.0;
+    for (int f = 0; f < frames; ++f) {
+        be.stepFrame(s.frame_dt);
+        overlap = std::max(overlap, rowOverlap(be, row, half));
+    }
+    return overlap;
+}
+
 // A box at 7 m/s runs into a row of resting boxes 1 cm apart, on a frictionless floor. Each impact
 // sets a box moving that the solve did not hold against its neighbour (not yet touching then): its
 // pair must still be met before it closes (it was in no solve), in every regime. Momentum goes down
@@ -110,11 +120,7 @@ TEST(NativeRegimes, ImpactRunsDownARowWithoutPenetration) {
         NativeSettings ns;
         ns.touching = regime;
         auto be = makeBackend(s, ns);
-        double overlap = 0.0;
-        for (int f = 0; f < 30; ++f) {
-            be->stepFrame(s.frame_dt);
-            overlap = std::max(overlap, rowOverlap(*be, row, half));
-        }
+        const double overlap = deepestRowOverlap(*be, s, row, half, 30);
         const char* name = regimeName(regime);
         EXPECT_LE(overlap, cd) << name;
         EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u) << name;
@@ -149,11 +155,7 @@ TEST(NativeRegimes, AHeavyBallsBlowCrossesARowOfTouchingBoxes) {
         NativeSettings ns;
         ns.threads = threads;
         auto be = makeBackend(s, ns);
-        double overlap = 0.0;
-        for (int f = 0; f < 12; ++f) {
-            be->stepFrame(s.frame_dt);
-            overlap = std::max(overlap, rowOverlap(*be, row, half));
-        }
+        const double overlap = deepestRowOverlap(*be, s, row, half, 12);
         EXPECT_LE(overlap, cd) << threads << " workers";
         EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u) << threads << " workers";
         double momentum = 10.0 * be->bodyState(ball).linear_velocity.x();
