@@ -531,8 +531,9 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
     // of it and meet after it; every dependent pair keeps the one-worker order (impulse_waves.h).
     scheduleImpulseWaves(manifolds, bodies, waves);
     std::array<CollisionTally, kMaxCollisionTeam> tallies{};
-    // Whether a worker applied an impulse, per sweep parity: a worker clears its flag for sweep s
-    // only after every worker has read the flags of sweep s - 2 (a wave's barrier lies between).
+    // The fastest approach a worker's impulses met (0: it applied none), per sweep parity: a worker
+    // clears its value for sweep s only after every worker has read those of sweep s - 2 (a wave's
+    // barrier lies between). Their largest decides the next sweep, the same for any worker count.
     std::array<std::array<double, kMaxCollisionTeam>, 2> applied{};
     SpinBarrier barrier(workers);
     const auto team = static_cast<std::size_t>(workers);
