@@ -249,7 +249,7 @@ PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<cons
         for (int j = 0; j < count; ++j)
             m(i, j) = sa.inv_mass + sb.inv_mass + arm_a[static_cast<std::size_t>(i)].dot(turn_a[static_cast<std::size_t>(j)]) +
                       arm_b[static_cast<std::size_t>(i)].dot(turn_b[static_cast<std::size_t>(j)]);
-    // Friction at the centroid: its tangential mass.
+    // The tangential mass at a point: slip change there per unit friction impulse there.
     const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
     auto tangentMass = [&](const Vec3& at) {
         Mat3 k = Mat3::Zero();
