@@ -5,11 +5,14 @@
 // penetration path used to return the horizontal normal (0.707, -0.707, 0).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include <fmt/format.h>
 
 #include "geometry/convex_mesh.h"
+#include "narrowphase/contact_patch.h"
 #include "narrowphase/proximity.h"
 
 namespace vroc::native {
@@ -100,6 +103,72 @@ TEST(NarrowphaseTouching, RealOverlapIsStillPenetrationAndSmallGapIsSeparation) 
         EXPECT_NEAR(s.distance, 1e-9, 1e-12) << describe(floor_pose, above, s);
         EXPECT_LE((s.normal - Vec3::UnitZ()).norm(), 1e-6) << describe(floor_pose, above, s);
     }
+}
+
+/// A cube set on another half a cube along x, its pose off by what resting solves leave (1e-11 m and
+/// 1e-11 rad in every direction), high in a pyramid (row 10 of 1 m cubes): the answer is the
+/// top face's normal, touching or apart by that noise. The walk may end on two parallel edges 2e-11
+/// m apart, whose direction between closest points is noise: a zero-gap pyramid of 30 rows lost a
+/// cube's support that way (its normal 62 deg off the vertical) and the cube fell for a frame.
+/// Then the patch: on fixed ticks (a speculative reach), the two faces' overlap rectangle
+/// [x0, x0 + 0.5] x [-0.5, 0.5], by its corners, whatever features the walk stopped at.
+TEST(NarrowphaseTouching, CubeSetHalfACubeOverAnotherWithTheNoiseOfRestingSolves) {
+    const ConvexMesh cube = ConvexMesh::fromPolyhedron(ConvexPolyhedron::box(Vec3(0.5, 0.5, 0.5)));
+    std::mt19937_64 rng(2212);
+    std::uniform_real_distribution<double> noise(-2e-11, 2e-11);
+    auto jitter = [&](const Vec3& at) {
+        const Vec3 axis(noise(rng), noise(rng), noise(rng));
+        return Pose{at + Vec3(noise(rng), noise(rng), noise(rng)),
+                    Quat(Eigen::AngleAxisd(axis.norm(), axis.normalized())).normalized()};
+    };
+    int bad_normals = 0, bad_patches = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const double x0 = -4.5 + 0.5 * (trial % 19);
+        const Pose pa = jitter(Vec3(x0, 0.0, 10.5)), pb = jitter(Vec3(x0 + 0.5, 0.0, 11.5));
+        FeatureCache cache;
+        const ProximityResult r = queryMeshMesh(cube, pa, cube, pb, cache);
+        SCOPED_TRACE(fmt::format("trial {}", trial));
+        if (std::abs(r.distance) > 1e-9 || (r.normal - Vec3::UnitZ()).norm() > 1e-6) {
+            if (++bad_normals <= 3) ADD_FAILURE() << describe(pa, pb, r);
+            continue;
+        }
+        const ContactPatch patch = contactPatch(cube, pa, cube, pb, cache, r, 1e-4, 1e-3);
+        bool corners = patch.points.size() >= 4;
+        for (const Vec3& c : {Vec3(x0, -0.5, 11.0), Vec3(x0 + 0.5, -0.5, 11.0), Vec3(x0 + 0.5, 0.5, 11.0), Vec3(x0, 0.5, 11.0)})
+            corners = corners && std::any_of(patch.points.begin(), patch.points.end(),
+                                             [&](const Vec3& p) { return (p - c).norm() < 1e-6; });
+        if (!corners && ++bad_patches <= 3)
+            ADD_FAILURE() << describe(pa, pb, r) << fmt::format("patch of {} points, centroid ({}, {}, {})\n",
+                                                               patch.points.size(), patch.centroid.x(),
+                                                               patch.centroid.y(), patch.centroid.z());
+    }
+    EXPECT_EQ(bad_normals, 0);
+    EXPECT_EQ(bad_patches, 0);
+}
+
+/// fcl-style regression, from a zero-gap pyramid of 50 rows of 1 m cubes on fixed ticks (the cube
+/// r46_b01 on r45_b01): the first tick's query at the placed poses, the second's from its cached
+/// features at the poses the first solve left. The walk then stopped at a side face of the lower
+/// cube; the touching normal is the top face's, and the patch built on the side face held one point
+/// under each upper cube: it sank 0.74 mm in that tick. The patch is the overlap rectangle.
+TEST(NarrowphaseTouching, ZeroGapPyramidCubeKeepsItsOverlapPatchOnTheSecondTick) {
+    const ConvexMesh cube = ConvexMesh::fromPolyhedron(ConvexPolyhedron::box(Vec3(0.5, 0.5, 0.5)));
+    FeatureCache cache;
+    const ProximityResult first = queryMeshMesh(cube, Pose{Vec3(-1.0, 0.0, 45.5), Quat::Identity()}, cube,
+                                                Pose{Vec3(-0.5, 0.0, 46.5), Quat::Identity()}, cache);
+    ASSERT_EQ(first.distance, 0.0);
+    // Quat(w, x, y, z) from the run's [x, y, z, w].
+    const Pose pa{Vec3(-0.99999999999995814, 1.7461566689064936e-15, 45.500000000000114),
+                  Quat(1.0, -5.0529535846944101e-17, -3.6968868792932924e-14, 4.3235873389201712e-16)};
+    const Pose pb{Vec3(-0.49999999999995237, 2.0285217594644472e-15, 46.500000000000128),
+                  Quat(1.0, -9.7281936985532167e-17, -2.9621562620795093e-14, 5.8679102154741134e-16)};
+    const ProximityResult r = queryMeshMesh(cube, pa, cube, pb, cache);
+    ASSERT_LE(std::abs(r.distance), 1e-12) << describe(pa, pb, r);
+    ASSERT_LE((r.normal - Vec3::UnitZ()).norm(), 1e-9) << describe(pa, pb, r);
+    const ContactPatch patch = contactPatch(cube, pa, cube, pb, cache, r, 1e-4, 1e-3);
+    ASSERT_EQ(patch.points.size(), 4u) << describe(pa, pb, r);
+    // Overlap of [-1.5, -0.5] and [-1, 0] in x, [-0.5, 0.5] in y: centroid (-0.75, 0, 46).
+    EXPECT_LE((patch.centroid - Vec3(-0.75, 0.0, 46.0)).norm(), 1e-9);
 }
 
 }  // namespace

@@ -363,9 +363,13 @@ void speculativePatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh&
     // stopped at need not border the faces that meet along it. (In a turning drum, two boxes 15 mm
     // into each other face to face kept a cached face at right angles to the normal: their faces
     // did not overlap, the patch was the one deepest point, and they sank for a third of a second.)
-    // The faces that meet are then the two most aligned with the normal of all.
-    const int fa = alignedFace(a, normals_a, cache.a, n, result.penetrating);
-    const int fb = alignedFace(b, normals_b, cache.b, -n, result.penetrating);
+    // The faces that meet are then the two most aligned with the normal of all. So too where the
+    // walk saw zero distance: the normal is then the best of both features' axes (proximity.cpp),
+    // which may be a face of one body that the other's feature does not border (a cube set exactly
+    // on two others took one point under each, and sank 0.7 mm in a tick).
+    const bool any_face = result.penetrating || !(result.distance > 0.0);
+    const int fa = alignedFace(a, normals_a, cache.a, n, any_face);
+    const int fb = alignedFace(b, normals_b, cache.b, -n, any_face);
     if (fa < 0 || fb < 0) return;
     clipFaces(a, pose_a, b, pose_b, normals_a, normals_b, fa, fb, result, tolerance, reach, patch);
 }

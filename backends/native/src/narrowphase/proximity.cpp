@@ -76,12 +76,17 @@ Vec3 edgeDirection(const ConvexMesh& m, const Pose& pose, int h) {
     return pose.rotate(m.position(m.destination(h)) - m.position(m.origin(h)));
 }
 
-/// Contact when the walk saw zero distance: if some candidate axis separates A and B to within a
-/// few ulp of the coordinates, the pair is touching, not penetrating, and that axis (a face
-/// normal, or an edge-edge cross product) is the normal. MPR's direction for a zero depth is
-/// arbitrary (e.g. horizontal for a box resting exactly on a floor), so it is not used then.
-bool touchingResult(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
-                    const FeatureCache& near, ProximityResult& r) {
+/// The best-separating of the axes the walk's final features offer (featureNormals, and the
+/// edge-edge cross product): its separation (>= the distance only for a separating axis), the axis
+/// (world, from A to B) and B's supporting point along it.
+struct FeatureAxis {
+    double separation = -std::numeric_limits<double>::infinity();
+    Vec3 normal = Vec3::UnitZ();
+    Vec3 support_b = Vec3::Zero();
+};
+
+FeatureAxis bestFeatureAxis(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+                            const FeatureCache& near) {
     thread_local std::vector<Vec3> axes;   // per worker, keeps its capacity: no allocation once warm
     axes.clear();
     featureNormals(a, pose_a, near.a, 1.0, axes);
@@ -94,23 +99,49 @@ bool touchingResult(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b
             axes.push_back(-c / len);
         }
     }
-    const double coords = a.scale() + b.scale() + pose_a.position.cwiseAbs().maxCoeff() +
-                          pose_b.position.cwiseAbs().maxCoeff();
-    const double tol = 64.0 * std::numeric_limits<double>::epsilon() * coords;
-    double best = -std::numeric_limits<double>::infinity();
+    FeatureAxis best;
     for (const Vec3& n : axes) {
         Vec3 pb;
         const double sep = separationAlong(a, pose_a, b, pose_b, n, vertexOf(a, near.a), vertexOf(b, near.b), pb);
-        if (sep > best) {
-            best = sep;
-            r.normal = n;
-            r.point_a = r.point_b = pb;
-        }
+        if (sep > best.separation) best = {sep, n, pb};
     }
-    if (!(best >= -tol)) return false;
+    return best;
+}
+
+/// Contact when the walk saw zero distance: if some candidate axis separates A and B to within a
+/// few ulp of the coordinates, the pair is touching, not penetrating, and that axis (a face
+/// normal, or an edge-edge cross product) is the normal. MPR's direction for a zero depth is
+/// arbitrary (e.g. horizontal for a box resting exactly on a floor), so it is not used then.
+bool touchingResult(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+                    const FeatureCache& near, ProximityResult& r) {
+    const double coords = a.scale() + b.scale() + pose_a.position.cwiseAbs().maxCoeff() +
+                          pose_b.position.cwiseAbs().maxCoeff();
+    const double tol = 64.0 * std::numeric_limits<double>::epsilon() * coords;
+    const FeatureAxis best = bestFeatureAxis(a, pose_a, b, pose_b, near);
+    r.normal = best.normal;
+    r.point_a = r.point_b = best.support_b;
+    if (!(best.separation >= -tol)) return false;
     r.distance = 0.0;
     r.penetrating = false;
     return true;
+}
+
+/// Below this fraction of the two meshes' scales a separated pair's direction between its closest
+/// points is noise (two parallel edges of a box set exactly on another, 2e-11 m apart, gave a normal
+/// 62 deg off the vertical: tests/backends/native/narrowphase_touching_test.cpp).
+constexpr double kNearTouching = 1e-6;
+/// A feature's axis stands for that direction if it separates them to within this fraction of the
+/// scales of the distance (the most any axis can separate them by).
+constexpr double kAxisSlack = 1e-9;
+
+/// A separated pair nearly touching: a face normal or an edge-edge cross product of its features
+/// that separates it as well as the closest points' direction does (to kAxisSlack) is its normal.
+void nearTouchingNormal(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
+                        const FeatureCache& near, ProximityResult& r) {
+    const double scales = a.scale() + b.scale();
+    if (!(r.distance < kNearTouching * scales)) return;
+    const FeatureAxis best = bestFeatureAxis(a, pose_a, b, pose_b, near);
+    if (best.separation >= r.distance - kAxisSlack * scales) r.normal = best.normal;
 }
 
 ProximityResult penetrationResult(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, const Pose& pose_b,
@@ -173,6 +204,7 @@ ProximityResult queryMeshMesh(const ConvexMesh& a, const Pose& pose_a, const Con
         // From the local difference (the one the distance came from): unit to rounding even when the
         // distance is tiny, unlike the difference of the two rounded world points.
         r.normal = rot_a * ((w.point_b - w.point_a) / w.distance);
+        nearTouchingNormal(a, pose_a, b, pose_b, cache, r);
     } else {   // Penetrating, or the retry failed too: MPR gives the verdict and the depth
         r = penetrationResult(a, pose_a, b, pose_b, cache);
         if (w.outcome == WalkOutcome::StepLimit && r.distance == 0.0) {
