@@ -403,8 +403,22 @@ void contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, 
     Scratch& sc = scratch();
     std::vector<Vec3>& pa = sc.piece_a;
     std::vector<Vec3>& pb = sc.piece_b;
-    supportPiece(a, pose_a, cache.a, n, result.point_a, tolerance, pa);
-    supportPiece(b, pose_b, cache.b, -n, result.point_b, tolerance, pb);
+    // Where the walk saw zero distance its features need not border the faces that meet along the
+    // normal (speculativePatch): a body's face most aligned with the normal is its piece's start if
+    // it lies on the support plane. (Cubes set exactly on one another got an edge each.)
+    Feature from_a = cache.a, from_b = cache.b;
+    if (!result.penetrating && result.distance == 0.0) {
+        auto onPlane = [&](const ConvexMesh& m, const Pose& pose, std::vector<Vec3>& normals, Feature f, const Vec3& dir,
+                           const Vec3& at, Feature& from) {
+            worldNormals(m, pose, normals);
+            const int face = alignedFace(m, normals, f, dir, true);
+            if (face >= 0 && faceOnPlane(m, pose, face, dir, at, tolerance)) from = {FeatureType::Face, face};
+        };
+        onPlane(a, pose_a, sc.normals_a, cache.a, n, result.point_a, from_a);
+        onPlane(b, pose_b, sc.normals_b, cache.b, -n, result.point_b, from_b);
+    }
+    supportPiece(a, pose_a, from_a, n, result.point_a, tolerance, pa);
+    supportPiece(b, pose_b, from_b, -n, result.point_b, tolerance, pb);
     Poly2& a2 = sc.a2;
     Poly2& b2 = sc.b2;
     Poly2& out = sc.out;
