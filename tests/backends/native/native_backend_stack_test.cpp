@@ -13,6 +13,31 @@
 namespace vroc::native::test {
 namespace {
 
+/// A 2-D pyramid of cubes of half size `half`, base `base` (rows r0 ... and boxes b0 ...), neighbours
+/// in a row `gap` apart and rows `rest` apart, centred on x = 0, y = 0 on the floor (top z = 0).
+void addPyramid(Scene& s, int base, double half, double gap, double rest, int mat) {
+    for (int row = 0; row < base; ++row)
+        for (int k = 0; k < base - row; ++k) {
+            const double x = (k - 0.5 * (base - row - 1)) * (2 * half + gap);
+            addBody(s, "r" + std::to_string(row) + "_b" + std::to_string(k), Shape::box(Vec3(half, half, half)),
+                    at(Vec3(x, 0, half + rest + row * (2 * half + rest))), mat, false, 1.0);
+        }
+}
+
+/// Steps `frames` frames of `dt`; the largest displacement of any body after the first (the floor)
+/// from where it started, over every frame end.
+double largestDisplacement(NativeBackend& be, double dt, int frames) {
+    std::vector<Vec3> start;
+    for (int i = 0; i < be.bodyCount(); ++i) start.push_back(be.bodyState(i).pose.position);
+    double worst = 0.0;
+    for (int f = 0; f < frames; ++f) {
+        be.stepFrame(dt);
+        for (int i = 1; i < be.bodyCount(); ++i)
+            worst = std::max(worst, (be.bodyState(i).pose.position - start[static_cast<std::size_t>(i)]).norm());
+    }
+    return worst;
+}
+
 Scene tenBoxStack(int& top) {
     const double cd = 1e-3, half = 0.25;
     Scene s = bareScene(cd);
@@ -128,21 +153,9 @@ TEST(NativeStack, ThirtyLevelPyramidStandsStill) {
     Scene s = bareScene(cd);
     const int mat = addMaterial(s, 0.0, 0.6);
     addFloor(s, mat, 20.0);
-    for (int row = 0; row < base; ++row)
-        for (int k = 0; k < base - row; ++k) {
-            const double x = (k - 0.5 * (base - row - 1)) * (2 * half + gap);
-            addBody(s, "r" + std::to_string(row) + "_b" + std::to_string(k), Shape::box(Vec3(half, half, half)),
-                    at(Vec3(x, 0, half + rest + row * (2 * half + rest))), mat, false, 1.0);
-        }
+    addPyramid(s, base, half, gap, rest, mat);
     auto be = makeBackend(s);
-    std::vector<Vec3> start;
-    for (int i = 0; i < be->bodyCount(); ++i) start.push_back(be->bodyState(i).pose.position);
-    double worst = 0.0;
-    for (int f = 0; f < 30; ++f) {
-        be->stepFrame(s.frame_dt);
-        for (int i = 1; i < be->bodyCount(); ++i)
-            worst = std::max(worst, (be->bodyState(i).pose.position - start[static_cast<std::size_t>(i)]).norm());
-    }
+    const double worst = largestDisplacement(*be, s.frame_dt, 30);
     EXPECT_LE(worst, 1e-4) << "largest displacement of any box in 0.5 s";
     EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u);
 }
@@ -159,21 +172,11 @@ TEST(NativeStack, ZeroGapPyramidOfBox3DCubesStandsOnFixedTicks) {
     Scene s = bareScene(cd);
     const int mat = addMaterial(s, 0.0, 0.6);
     addFloor(s, mat, 60.0);
-    for (int row = 0; row < base; ++row)
-        for (int k = 0; k < base - row; ++k)
-            addBody(s, "r" + std::to_string(row) + "_b" + std::to_string(k), Shape::box(Vec3(half, half, half)),
-                    at(Vec3((k - 0.5 * (base - row - 1)) * 2 * half, 0, half + row * 2 * half)), mat, false, 1.0);
+    addPyramid(s, base, half, 0.0, 0.0, mat);
     NativeSettings ns;
     ns.touching = TouchingRegime::Fixed;
     auto be = makeBackend(s, ns);
-    std::vector<Vec3> start;
-    for (int i = 0; i < be->bodyCount(); ++i) start.push_back(be->bodyState(i).pose.position);
-    double worst = 0.0;
-    for (int f = 0; f < frames; ++f) {
-        be->stepFrame(s.frame_dt);
-        for (int i = 1; i < be->bodyCount(); ++i)
-            worst = std::max(worst, (be->bodyState(i).pose.position - start[static_cast<std::size_t>(i)]).norm());
-    }
+    const double worst = largestDisplacement(*be, s.frame_dt, frames);
     EXPECT_LE(worst, 1e-5) << "largest displacement of any box";
     EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u);
 }

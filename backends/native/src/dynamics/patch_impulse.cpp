@@ -298,10 +298,11 @@ PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<cons
         const Vec3 u = sb.at(c) - sa.at(c);
         return Eigen::Vector2d(u.dot(t1), u.dot(t2));
     };
-    // The friction that stops the slip at c given normal impulses y, by the tangential mass's
-    // inverse there (k_inv) and the coupling there (mnt): -k_inv (u_t(c) + M_tn(c) y).
-    auto stopping = [&](const Vec3& c, const Eigen::Matrix2d& k_inv, const Coupling& mnt, const BlockVector& y) {
-        return Eigen::Vector2d(-k_inv * (slipAt(c) + mnt.topRows(count).transpose() * y.head(count)));
+    // The friction that stops the slip at a point given normal impulses y, from the slip there
+    // before them (slip = slipAt(c)), the tangential mass's inverse there (k_inv) and the coupling
+    // there (mnt): -k_inv (u_t(c) + M_tn(c) y).
+    auto stopping = [&](const Eigen::Vector2d& slip, const Eigen::Matrix2d& k_inv, const Coupling& mnt, const BlockVector& y) {
+        return Eigen::Vector2d(-k_inv * (slip + mnt.topRows(count).transpose() * y.head(count)));
     };
     auto total = [&](const BlockVector& y) { return y.head(count).sum(); };
     // The normal impulses' centre of pressure (the centroid while there are none).
@@ -331,7 +332,7 @@ PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<cons
         }
         const BlockVector y = solveNormalLcp(schur, q, count);
         if (y.allFinite()) {
-            const Eigen::Vector2d stick = stopping(centroid, kt_inv, mnt, y);
+            const Eigen::Vector2d stick = stopping(qt, kt_inv, mnt, y);
             const double limit = friction * total(y);
             if (stick.allFinite() && stick.norm() <= limit) {
                 writeNormal(y);
@@ -369,7 +370,7 @@ PatchImpulse patchImpulse(const RigidBody& a, const RigidBody& b, std::span<cons
         const Eigen::Matrix2d k = tangentMass(next_at);
         const Eigen::Matrix2d k_inv = k.determinant() > 0.0 ? Eigen::Matrix2d(k.inverse()) : kt_inv;
         mnt = coupling(next_at);
-        f_now = stopping(next_at, k_inv, mnt, y);
+        f_now = stopping(slipAt(next_at), k_inv, mnt, y);
         const double limit = friction * total(y);
         if (f_now.norm() > limit) f_now *= f_now.norm() > 0.0 ? limit / f_now.norm() : 0.0;
         const Eigen::Vector2d g = f_now - lambda;

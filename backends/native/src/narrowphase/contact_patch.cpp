@@ -408,14 +408,14 @@ void contactPatch(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, 
     // it lies on the support plane. (Cubes set exactly on one another got an edge each.)
     Feature from_a = cache.a, from_b = cache.b;
     if (!result.penetrating && result.distance == 0.0) {
-        auto onPlane = [&](const ConvexMesh& m, const Pose& pose, std::vector<Vec3>& normals, Feature f, const Vec3& dir,
+        auto onPlane = [&](const ConvexMesh& m, const Pose& pose, std::vector<Vec3>& normals, const Vec3& dir,
                            const Vec3& at, Feature& from) {
             worldNormals(m, pose, normals);
-            const int face = alignedFace(m, normals, f, dir, true);
+            const int face = alignedFace(m, normals, from, dir, true);   // of all faces: `from` unread
             if (face >= 0 && faceOnPlane(m, pose, face, dir, at, tolerance)) from = {FeatureType::Face, face};
         };
-        onPlane(a, pose_a, sc.normals_a, cache.a, n, result.point_a, from_a);
-        onPlane(b, pose_b, sc.normals_b, cache.b, -n, result.point_b, from_b);
+        onPlane(a, pose_a, sc.normals_a, n, result.point_a, from_a);
+        onPlane(b, pose_b, sc.normals_b, -n, result.point_b, from_b);
     }
     supportPiece(a, pose_a, from_a, n, result.point_a, tolerance, pa);
     supportPiece(b, pose_b, from_b, -n, result.point_b, tolerance, pb);
