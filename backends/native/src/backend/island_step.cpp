@@ -221,6 +221,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     solver.shock_iterations = settings_.shock_iterations;
     solver.shock_per_level = settings_.shock_per_level;
     solver.shock_support = settings_.shock_support;
+    solver.shock_whole_bodies = settings_.shock_whole_bodies;
     solver.warm_start = settings_.warm_start;
     solver.tolerance = settings_.solver_tolerance;
     // Penetration (deeper than rounding: a patch placed exactly touching is left alone) is pushed

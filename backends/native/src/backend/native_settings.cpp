@@ -45,9 +45,19 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "against gravity by more than this (the sine of its elevation): a box leaning on a wall is "
                  "not ground for the boxes below it. -1: any contact, levels are graph distances from every "
                  "static or tracked body (docs/native-dynamics.md, \"Levels that follow gravity\")"});
+    s.push_back({"native.shock_whole_bodies",
+                 T::Boolean,
+                 "true",
+                 0,
+                 0,
+                 {},
+                 "a shock sweep solves each body held only from the frozen levels below (and static bodies) "
+                 "in one block: all its supporting patches' points, friction and spin at once, if they stick "
+                 "and push; false: patch by patch (docs/native-dynamics.md, \"Shock levels solved body by body\")"});
     s.push_back({"native.solver_tolerance", T::Real, "0", 0, 1, {},
                  "[m/s] contact and shock sweeps stop early once a whole sweep changes no contact's "
-                 "relative velocity by more than this (0: always run every sweep)"});
+                 "relative velocity by more than this (0: every contact sweep runs; a level's shock sweeps "
+                 "still end once what is left is rounding or a cycle)"});
     s.push_back({"native.contact_substeps", T::Integer, "1", 1, 1000, {},
                  "island ticks per frame: the contact phase's step is frame_dt / this"});
     s.push_back({"native.protection_ring", T::Integer, "-1", -1, 1000, {},
@@ -170,6 +180,7 @@ NativeSettings NativeSettings::from(const Settings& settings) {
         n.shock_iterations = static_cast<int>(settings.integer("native.shock_iterations"));
     if (has("native.shock_per_level")) n.shock_per_level = settings.boolean("native.shock_per_level");
     if (has("native.shock_support")) n.shock_support = settings.real("native.shock_support");
+    if (has("native.shock_whole_bodies")) n.shock_whole_bodies = settings.boolean("native.shock_whole_bodies");
     if (has("native.solver_tolerance")) n.solver_tolerance = settings.real("native.solver_tolerance");
     if (has("native.contact_substeps"))
         n.contact_substeps = static_cast<int>(settings.integer("native.contact_substeps"));

@@ -50,6 +50,7 @@ struct NativeSettings {
     /// [-] a contact passes a shock level up only if its normal, towards the upper body, rises against
     /// gravity by more than this (sine of its elevation); -1: any contact (levels from every static body)
     double shock_support = 0.0;
+    bool shock_whole_bodies = true;         ///< shock sweeps solve a body held from the frozen levels as one block
     double solver_tolerance = 0.0;          ///< [m/s] contact sweeps stop once a sweep changes no velocity more
     int contact_substeps = 1;               ///< island ticks per frame (the contact phase's step)
     TouchingRegime touching = TouchingRegime::Protected;   ///< how touching islands are scheduled (speculative: experimental)

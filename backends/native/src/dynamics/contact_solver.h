@@ -36,6 +36,9 @@ struct ContactSolverSettings {
     /// gravity by more than this (the sine of its elevation above the horizontal); -1 (or no
     /// gravity): every contact, so levels are plain graph distances from the bodies of infinite mass.
     double shock_support = 0.0;
+    /// Shock sweeps solve each body held only from the frozen levels (and static bodies) as one
+    /// block (support_block.h) while its patches stick and push; false: patch by patch.
+    bool shock_whole_bodies = true;
     /// [m/s] sweeps (and each level's shock sweeps) stop early once no relaxation in a whole sweep
     /// changed a contact's relative velocity by more than this; 0 runs every sweep.
     double tolerance = 0.0;
