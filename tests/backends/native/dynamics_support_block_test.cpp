@@ -50,7 +50,8 @@ RandomRows randomRows(std::mt19937_64& rng, int patches) {
 
 Eigen::MatrixXd columns(const std::vector<SupportRow>& rows) {
     Eigen::MatrixXd w(6, static_cast<Eigen::Index>(rows.size()));
-    for (std::size_t i = 0; i < rows.size(); ++i) w.col(static_cast<Eigen::Index>(i)) << rows[i].linear, rows[i].angular;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        w.col(static_cast<Eigen::Index>(i)) << rows[i].linear, rows[i].angular;
     return w;
 }
 
@@ -78,19 +79,22 @@ void expectAgainstSvd(int patches, bool consistent, std::uint64_t seed) {
         Eigen::MatrixXd m_inv = Eigen::MatrixXd::Zero(6, 6);
         m_inv.topLeftCorner(3, 3) = r.inv_mass * Mat3::Identity();
         m_inv.bottomRightCorner(3, 3) = r.inv_inertia;
-        const Eigen::VectorXd du_ref = Eigen::JacobiSVD<Eigen::MatrixXd>(w.transpose(), Eigen::ComputeThinU | Eigen::ComputeThinV).solve(e);
+        const Eigen::JacobiSVD<Eigen::MatrixXd> fit(w.transpose(), Eigen::ComputeThinU | Eigen::ComputeThinV);
+        const Eigen::VectorXd du_ref = fit.solve(e);
         Eigen::JacobiSVD<Eigen::MatrixXd> svd(w.transpose() * m_inv * w, Eigen::ComputeFullU | Eigen::ComputeFullV);
         svd.setThreshold(1e-10);
         Eigen::VectorXd target = e;
         if (!consistent) target = w.transpose() * du_ref;   // the part of e one motion meets
         const Eigen::VectorXd p_ref = svd.solve(target);
         const double scale = 1.0 + p_ref.cwiseAbs().maxCoeff();
+        const double du_scale = 1.0 + du_ref.cwiseAbs().maxCoeff();
         for (int i = 0; i < 3; ++i) {
-            EXPECT_NEAR(dv(i), du_ref(i), 1e-9 * (1.0 + du_ref.cwiseAbs().maxCoeff())) << "seed " << seed << " trial " << trial;
-            EXPECT_NEAR(dw(i), du_ref(3 + i), 1e-9 * (1.0 + du_ref.cwiseAbs().maxCoeff())) << "seed " << seed << " trial " << trial;
+            EXPECT_NEAR(dv(i), du_ref(i), 1e-9 * du_scale) << "seed " << seed << " trial " << trial;
+            EXPECT_NEAR(dw(i), du_ref(3 + i), 1e-9 * du_scale) << "seed " << seed << " trial " << trial;
         }
         for (int i = 0; i < count; ++i)
-            EXPECT_NEAR(p[static_cast<std::size_t>(i)], p_ref(i), 1e-8 * scale) << "seed " << seed << " trial " << trial << " row " << i;
+            EXPECT_NEAR(p[static_cast<std::size_t>(i)], p_ref(i), 1e-8 * scale)
+                << "seed " << seed << " trial " << trial << " row " << i;
     }
 }
 

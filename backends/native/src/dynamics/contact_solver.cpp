@@ -676,6 +676,7 @@ bool supportRows(const std::vector<PointConstraint>& cs, BodySupport& s, std::ve
 // `change` is the largest change of a row's speed it made [m/s].
 bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, BodySupport& s, double& change) {
     std::array<double, kMaxSupportRows> e{}, x{};
+    auto at = [](std::array<double, kMaxSupportRows>& v, int i) -> double& { return v[static_cast<std::size_t>(i)]; };
     int r = 0;
     for (int k = 0; k < s.count; ++k) {
         const Patch& p = *s.patches[static_cast<std::size_t>(k)];
@@ -683,12 +684,12 @@ bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, B
         const WorkBody& a = wb[f.a];
         const WorkBody& b = wb[f.b];
         const Eigen::Vector4d normal = normalErrors(a, b, cs, p, p.count);
-        for (int i = 0; i < p.count; ++i) e[static_cast<std::size_t>(r++)] = normal(i);
+        for (int i = 0; i < p.count; ++i) at(e, r++) = normal(i);
         if (!(f.mu > 0.0)) continue;
         const Eigen::Vector2d slip = centroidSlip(a, b, f, p.rows);
-        e[static_cast<std::size_t>(r++)] = -slip(0);
-        e[static_cast<std::size_t>(r++)] = -slip(1);
-        if (p.torsion_radius > 0.0) e[static_cast<std::size_t>(r++)] = -p.torsion_radius * (b.w - a.w).dot(f.n);
+        at(e, r++) = -slip(0);
+        at(e, r++) = -slip(1);
+        if (p.torsion_radius > 0.0) at(e, r++) = -p.torsion_radius * (b.w - a.w).dot(f.n);
     }
     Vec3 dv, dw;
     s.block.solve(s.rows, e.data(), dv, dw, x.data());
@@ -700,17 +701,17 @@ bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, B
         const PointConstraint& f = p.friction;
         double normal_sum = 0.0;
         for (int i = 0; i < p.count; ++i) {
-            const double next = cs[static_cast<std::size_t>(p.first + i)].lambda_n + x[static_cast<std::size_t>(r++)];
+            const double next = cs[static_cast<std::size_t>(p.first + i)].lambda_n + at(x, r++);
             if (!(next >= 0.0)) return false;
             normal_sum += next;
         }
         if (!(f.mu > 0.0)) continue;
         const double limit = f.mu * normal_sum;
-        const Eigen::Vector2d tangent = f.lambda_t + Eigen::Vector2d(x[static_cast<std::size_t>(r)], x[static_cast<std::size_t>(r) + 1]);
+        const Eigen::Vector2d tangent = f.lambda_t + Eigen::Vector2d(at(x, r), at(x, r + 1));
         r += 2;
         if (tangent.squaredNorm() > limit * limit) return false;
         if (p.torsion_radius > 0.0) {
-            const double torsion = p.lambda_torsion + x[static_cast<std::size_t>(r++)] * p.torsion_radius;
+            const double torsion = p.lambda_torsion + at(x, r++) * p.torsion_radius;
             if (std::abs(torsion) > limit * p.torsion_radius) return false;
         }
     }
@@ -718,11 +719,11 @@ bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, B
     change = 0.0;
     for (int k = 0; k < s.count; ++k) {
         Patch& p = *s.patches[static_cast<std::size_t>(k)];
-        for (int i = 0; i < p.count; ++i) cs[static_cast<std::size_t>(p.first + i)].lambda_n += x[static_cast<std::size_t>(r++)];
+        for (int i = 0; i < p.count; ++i) cs[static_cast<std::size_t>(p.first + i)].lambda_n += at(x, r++);
         if (!(p.friction.mu > 0.0)) continue;
-        p.friction.lambda_t += Eigen::Vector2d(x[static_cast<std::size_t>(r)], x[static_cast<std::size_t>(r) + 1]);
+        p.friction.lambda_t += Eigen::Vector2d(at(x, r), at(x, r + 1));
         r += 2;
-        if (p.torsion_radius > 0.0) p.lambda_torsion += x[static_cast<std::size_t>(r++)] * p.torsion_radius;
+        if (p.torsion_radius > 0.0) p.lambda_torsion += at(x, r++) * p.torsion_radius;
     }
     for (int i = 0; i < s.row_count; ++i) {
         const SupportRow& row = s.rows[i];
@@ -1278,18 +1279,20 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
                               ? std::max(settings.shock_iterations, height)
                               : settings.shock_iterations;
         scratch.supports.clear();
-        if (shock > 0 && settings.shock_whole_bodies) findSupports(wb, cs, manifolds, plan, settings.speculative_from, up, settings.shock_support, scratch);
+        if (shock > 0 && settings.shock_whole_bodies)
+            findSupports(wb, cs, manifolds, plan, settings.speculative_from, up, settings.shock_support, scratch);
         SweepCounts counts;
         if (settings.team && settings.team_size > 1 && manifolds.size() >= kTeamManifolds) {
             SpinBarrier barrier(settings.team_size);
             auto sweep = [&](int worker) {
-                const SweepCounts mine = runSweeps(wb, cs, plan, scratch.supports, sweeps, shock, settings.tolerance, worker,
-                                                   settings.team_size, &barrier, changes);
+                const SweepCounts mine = runSweeps(wb, cs, plan, scratch.supports, sweeps, shock, settings.tolerance,
+                                                   worker, settings.team_size, &barrier, changes);
                 if (worker == 0) counts = mine;
             };
             settings.team([&sweep](int worker) { sweep(worker); });   // one reference captured: no allocation
         } else {
-            counts = runSweeps(wb, cs, plan, scratch.supports, sweeps, shock, settings.tolerance, 0, 1, nullptr, changes);
+            counts = runSweeps(wb, cs, plan, scratch.supports, sweeps, shock, settings.tolerance, 0, 1, nullptr,
+                               changes);
         }
         report.sweeps = counts.sweeps;
         report.shock_sweeps = counts.shock_sweeps;
