@@ -683,8 +683,13 @@ bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, B
         const PointConstraint& f = p.friction;
         const WorkBody& a = wb[f.a];
         const WorkBody& b = wb[f.b];
-        const Eigen::Vector4d normal = normalErrors(a, b, cs, p, p.count);
-        for (int i = 0; i < p.count; ++i) at(e, r++) = normal(i);
+        // What each point lacks of its target normal speed (as normalErrors, for any count: a
+        // patch of a hull may hold more than four points).
+        const double un_lin = f.n.dot(b.v - a.v);
+        for (int i = p.first; i < p.first + p.count; ++i) {
+            const PointConstraint& c = cs[static_cast<std::size_t>(i)];
+            at(e, r++) = c.target - (un_lin + b.w.dot(c.rb_n) - a.w.dot(c.ra_n));
+        }
         if (!(f.mu > 0.0)) continue;
         const Eigen::Vector2d slip = centroidSlip(a, b, f, p.rows);
         at(e, r++) = -slip(0);
