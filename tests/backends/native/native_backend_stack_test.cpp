@@ -166,13 +166,18 @@ TEST(NativeStack, ThirtyLevelPyramidStandsStill) {
 // each upper cube, built on a side face the walk stopped at) and moved 27 mm in 1 s. It must stand:
 // no box moves more than 0.01 mm (narrowphase_touching_test.cpp has the queries, and the other
 // fault, a near-touching normal, that sank a cube of the base-30 scene).
-TEST(NativeStack, ZeroGapPyramidOfBox3DCubesStandsOnFixedTicks) {
-    const int base = 50, frames = 4;
-    const double cd = 1e-3, half = 0.5;
-    Scene s = bareScene(cd);
+// Box3D's pyramid of `base` 1 m cubes, zero gaps, friction 0.6, cd 1 mm, on a floor that holds it.
+Scene zeroGapPyramid(int base) {
+    Scene s = bareScene(1e-3);
     const int mat = addMaterial(s, 0.0, 0.6);
-    addFloor(s, mat, 60.0);
-    addPyramid(s, base, half, 0.0, 0.0, mat);
+    addFloor(s, mat, base + 10.0);
+    addPyramid(s, base, 0.5, 0.0, 0.0, mat);
+    return s;
+}
+
+TEST(NativeStack, ZeroGapPyramidOfBox3DCubesStandsOnFixedTicks) {
+    const int frames = 4;
+    const Scene s = zeroGapPyramid(50);
     NativeSettings ns;
     ns.touching = TouchingRegime::Fixed;
     auto be = makeBackend(s, ns);
@@ -187,12 +192,8 @@ TEST(NativeStack, ZeroGapPyramidOfBox3DCubesStandsOnFixedTicks) {
 // position pass, and the pyramid moved 11.7 mm in 1 s (base 50: 14.9 mm). With each body of a
 // shock level solved against its frozen supports at once (support_block.h) it stands.
 TEST(NativeStack, ZeroGapPyramidOfBox3DCubesStandsInTheDefaultRegime) {
-    const int base = 30, frames = 60;
-    const double cd = 1e-3, half = 0.5;
-    Scene s = bareScene(cd);
-    const int mat = addMaterial(s, 0.0, 0.6);
-    addFloor(s, mat, 40.0);
-    addPyramid(s, base, half, 0.0, 0.0, mat);
+    const int frames = 60;
+    const Scene s = zeroGapPyramid(30);
     auto be = makeBackend(s);
     const double worst = largestDisplacement(*be, s.frame_dt, frames);
     EXPECT_LE(worst, 1e-5) << "largest displacement of any box in 1 s";
