@@ -443,15 +443,18 @@ void factorNormalBlock(const std::vector<WorkBody>& wb, const std::vector<PointC
 // What each of a patch's points lacks of its target normal speed (zero beyond its count). The points
 // share the normal: n.u_i = n.(v_b - v_a) + w_b.(r_bi x n) - w_a.(r_ai x n).
 // `count` is the patch's (passed in, so that a caller's check of its range reaches the loop).
+// One point's share of that, given the pair's relative speed along the normal, n.(v_b - v_a).
+[[gnu::always_inline]] inline double normalError(const WorkBody& a, const WorkBody& b, const PointConstraint& c,
+                                                 double un_lin) {
+    return c.target - (un_lin + b.w.dot(c.rb_n) - a.w.dot(c.ra_n));
+}
+
 [[gnu::always_inline]] inline Eigen::Vector4d normalErrors(const WorkBody& a, const WorkBody& b,
                                                            const std::vector<PointConstraint>& cs, const Patch& p,
                                                            int count) {
     const double un_lin = p.friction.n.dot(b.v - a.v);
     Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
-    for (int i = 0; i < count; ++i) {
-        const PointConstraint& ci = cs[static_cast<std::size_t>(p.first + i)];
-        rhs(i) = ci.target - (un_lin + b.w.dot(ci.rb_n) - a.w.dot(ci.ra_n));
-    }
+    for (int i = 0; i < count; ++i) rhs(i) = normalError(a, b, cs[static_cast<std::size_t>(p.first + i)], un_lin);
     return rhs;
 }
 
@@ -683,13 +686,10 @@ bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, B
         const PointConstraint& f = p.friction;
         const WorkBody& a = wb[f.a];
         const WorkBody& b = wb[f.b];
-        // What each point lacks of its target normal speed (as normalErrors, for any count: a
-        // patch of a hull may hold more than four points).
+        // Point by point, not through normalErrors' four: a patch of a hull may hold more points.
         const double un_lin = f.n.dot(b.v - a.v);
-        for (int i = p.first; i < p.first + p.count; ++i) {
-            const PointConstraint& c = cs[static_cast<std::size_t>(i)];
-            at(e, r++) = c.target - (un_lin + b.w.dot(c.rb_n) - a.w.dot(c.ra_n));
-        }
+        for (int i = p.first; i < p.first + p.count; ++i)
+            at(e, r++) = normalError(a, b, cs[static_cast<std::size_t>(i)], un_lin);
         if (!(f.mu > 0.0)) continue;
         const Eigen::Vector2d slip = centroidSlip(a, b, f, p.rows);
         at(e, r++) = -slip(0);
