@@ -10,46 +10,11 @@
 #include <limits>
 #include <random>
 
-#include <Eigen/QR>
-
 #include "dynamics/normal_lcp.h"
+#include "lcp_enumeration.h"
 
 namespace vroc::native::test {
 namespace {
-
-// Every active set, each solved for the minimum norm; the feasible complementary answer of least
-// norm (unique for a definite M).
-Eigen::VectorXd enumerateLcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q) {
-    const int n = static_cast<int>(q.size());
-    Eigen::VectorXd best;
-    double best_norm = std::numeric_limits<double>::infinity();
-    for (int mask = 0; mask < (1 << n); ++mask) {
-        std::vector<int> act;
-        for (int i = 0; i < n; ++i)
-            if (mask >> i & 1) act.push_back(i);
-        Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-        if (!act.empty()) {
-            const auto k = static_cast<Eigen::Index>(act.size());
-            Eigen::MatrixXd ma(k, k);
-            Eigen::VectorXd qa(k);
-            for (Eigen::Index r = 0; r < k; ++r) {
-                qa(r) = -q(act[static_cast<std::size_t>(r)]);
-                for (Eigen::Index c = 0; c < k; ++c)
-                    ma(r, c) = m(act[static_cast<std::size_t>(r)], act[static_cast<std::size_t>(c)]);
-            }
-            const Eigen::VectorXd xa = ma.completeOrthogonalDecomposition().solve(qa);
-            for (Eigen::Index r = 0; r < k; ++r) x(act[static_cast<std::size_t>(r)]) = xa(r);
-        }
-        const Eigen::VectorXd w = m * x + q;
-        const double scale = 1e-9 * (1.0 + q.cwiseAbs().maxCoeff());
-        if (x.minCoeff() < -scale || w.minCoeff() < -scale || std::abs(x.dot(w)) > scale) continue;
-        if (x.norm() < best_norm) {
-            best_norm = x.norm();
-            best = x;
-        }
-    }
-    return best;
-}
 
 struct Problem {
     LcpMatrix m = LcpMatrix::Zero();
@@ -79,7 +44,7 @@ TEST(DynamicsNormalLcp, OneAndTwoPointsMatchTheEnumeratedSolutionAndTheActiveSet
         ASSERT_TRUE(solveSmallNormalLcp(p.m, p.q, count, small)) << "trial " << trial;
         ++closed;
         const Eigen::VectorXd expect =
-            enumerateLcp(p.m.topLeftCorner(count, count), p.q.head(count));
+            enumerateLcp(p.m.topLeftCorner(count, count), p.q.head(count), 1e-9 * (1.0 + p.q.head(count).cwiseAbs().maxCoeff()));
         ASSERT_EQ(expect.size(), count) << "trial " << trial << ": no complementary answer";
         const LcpVector general = solveNormalLcpByActiveSet(p.m, p.q, count);
         const LcpVector dispatched = solveNormalLcp(p.m, p.q, count);

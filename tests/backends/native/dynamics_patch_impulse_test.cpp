@@ -13,6 +13,7 @@
 
 #include "dynamics/newton_coulomb.h"
 #include "dynamics/patch_impulse.h"
+#include "lcp_enumeration.h"
 #include "native_test_scenes.h"
 
 namespace vroc::native::test {
@@ -112,43 +113,6 @@ Landing randomLanding(std::mt19937_64& rng, double va, double wa, double wb) {
     l.pts = bottomCorners(l.h);
     l.pts.resize(static_cast<std::size_t>(count));
     return l;
-}
-
-// The rows and columns `rows` of M x + q = 0 solved (minimum norm), x zero elsewhere.
-Eigen::VectorXd solveOnRows(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const std::vector<int>& rows) {
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(q.size());
-    if (rows.empty()) return x;
-    Eigen::MatrixXd ma(rows.size(), rows.size());
-    Eigen::VectorXd qa(rows.size());
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-        qa(static_cast<Eigen::Index>(r)) = -q(rows[r]);
-        for (std::size_t c = 0; c < rows.size(); ++c) ma(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = m(rows[r], rows[c]);
-    }
-    const Eigen::VectorXd xa = ma.completeOrthogonalDecomposition().solve(qa);
-    for (std::size_t r = 0; r < rows.size(); ++r) x(rows[r]) = xa(static_cast<Eigen::Index>(r));
-    return x;
-}
-
-// Frictionless patch LCP: w = M x + q >= 0, x >= 0, x.w = 0 with q_i = u_i - target_i. Solved by
-// trying every active set (N <= 4): an independent answer for the patch impulse.
-Eigen::VectorXd enumerateLcp(const Eigen::MatrixXd& m, const Eigen::VectorXd& q) {
-    const int n = static_cast<int>(q.size());
-    Eigen::VectorXd best;
-    double best_norm = std::numeric_limits<double>::infinity();
-    for (int mask = 0; mask < (1 << n); ++mask) {
-        std::vector<int> act;
-        for (int i = 0; i < n; ++i)
-            if (mask >> i & 1) act.push_back(i);
-        const Eigen::VectorXd x = solveOnRows(m, q, act);
-        const Eigen::VectorXd w = m * x + q;
-        if (x.minCoeff() < -1e-9 || w.minCoeff() < -1e-9) continue;
-        if (std::abs(x.dot(w)) > 1e-9) continue;
-        if (x.norm() < best_norm) {
-            best_norm = x.norm();
-            best = x;
-        }
-    }
-    return best;
 }
 
 TEST(DynamicsPatchImpulse, FrictionlessPatchesMatchTheEnumeratedComplementaritySolution) {
