@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // contactPatch against closed forms: face-face overlap rectangle, edge on face, vertex contact; and
 // against brute-force SAT: a speculative patch of two overlapping boxes reaches where they overlap.
+#include <array>
+
 #include "narrowphase/contact_patch.h"
 #include "narrowphase_check.h"
 
@@ -108,6 +110,33 @@ TEST(NarrowphaseContactPatch, SpeculativePatchReachesTheOverlap) {
         ++checked;
     }
     EXPECT_GE(checked, 400);
+}
+
+// Two cubes turned 45 degrees about z, side by side along x, meet edge to edge: the speculative patch
+// is the whole shared edge, z from -h to h, with any turn of one of them that rounding leaves (a
+// 1e-15 rad turn made it a sliver at one end: an impact there set the cubes spinning).
+TEST(NarrowphaseContactPatch, ParallelEdgesGiveTheWholeEdgeWhateverTurnRoundingLeaves) {
+    const double h = 0.05, half = h * std::sqrt(2.0), gap = 0.0086;
+    const ConvexMesh m = ConvexMesh::box(Vec3(h, h, h));
+    const Quat turned(Eigen::AngleAxisd(M_PI / 4, Vec3::UnitZ()));
+    const std::array<Vec3, 2> axes{Vec3::UnitX(), Vec3::UnitY()};
+    for (double tilt : {0.0, 1e-15, 1e-12, 1e-9})
+        for (const Vec3& axis : axes) {
+            const Pose pa{Vec3(0.35, 0, 0), Quat(Eigen::AngleAxisd(tilt, axis)) * turned};
+            const Pose pb{Vec3(0.35 + 2 * half + gap, 0, 0), turned};
+            FeatureCache cache;
+            const ProximityResult r = queryMeshMesh(m, pa, m, pb, cache);
+            const ContactPatch patch = contactPatch(m, pa, m, pb, cache, r, 1e-3, 0.0135);
+            ASSERT_GE(patch.points.size(), 2u) << "tilt " << tilt << " about " << axis.transpose();
+            double lo = 1.0, hi = -1.0;
+            for (const Vec3& p : patch.points) {
+                lo = std::min(lo, p.z());
+                hi = std::max(hi, p.z());
+                EXPECT_NEAR(p.y(), 0.0, 1e-6) << "tilt " << tilt << " about " << axis.transpose();
+            }
+            EXPECT_NEAR(lo, -h, 1e-6) << "tilt " << tilt << " about " << axis.transpose();
+            EXPECT_NEAR(hi, h, 1e-6) << "tilt " << tilt << " about " << axis.transpose();
+        }
 }
 
 }  // namespace

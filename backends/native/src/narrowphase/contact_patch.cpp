@@ -260,9 +260,17 @@ void clipFaces(const ConvexMesh& a, const Pose& pose_a, const ConvexMesh& b, con
     Poly2& overlap = scratch().out;
     clipPolygon(b2, a2, overlap);
     for (const Eigen::Vector2d& x : overlap) candidates.push_back({x, nan, nan});
+    // A vertex on the face's outline counts as over it, to rounding. Two edges meeting edge-on (cubes
+    // turned 45 degrees, side by side) have faces that share only that line: a turn of 1e-15 rad, from
+    // rounding, left one end of the edge outside and the patch a sliver at the other, and the impact
+    // there set the cubes spinning. (A margin of `tolerance` also holds a real turn of 1e-6 rad, but
+    // makes the patch depend on which of two equally close features the walk stopped at: pair bounds
+    // then changed results, NativeFixedTicks.PairBoundsSkipQueriesNotResults.)
     auto inside = [](const Poly2& poly, const Eigen::Vector2d& x) {
-        for (std::size_t i = 0; i < poly.size(); ++i)
-            if (cross2(poly[(i + 1) % poly.size()] - poly[i], x - poly[i]) < 0.0) return false;
+        for (std::size_t i = 0; i < poly.size(); ++i) {
+            const Eigen::Vector2d e = poly[(i + 1) % poly.size()] - poly[i], r = x - poly[i];
+            if (cross2(e, r) < -1e-9 * e.norm() * (e.norm() + r.norm())) return false;
+        }
         return true;
     };
     // A vertex on its body's far side (every face around it turned away from the other body) is not
