@@ -644,6 +644,22 @@ double relaxPatch(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, P
     return change;
 }
 
+// The rows a supporting patch gives its body's block after its points: friction along t1 and t2 where
+// it has friction, and spin where it also has a torsion radius. One home for the layout that
+// supportRows builds and relaxSupport reads.
+struct SupportRowLayout {
+    bool friction = false, spin = false;
+    int rows = 0;
+};
+
+SupportRowLayout supportRowLayout(const Patch& p) {
+    SupportRowLayout l;
+    l.friction = p.friction.mu > 0.0;
+    l.spin = l.friction && p.torsion_radius > 0.0;
+    l.rows = p.count + (l.friction ? 2 : 0) + (l.spin ? 1 : 0);
+    return l;
+}
+
 // The rows of a support (BodySupport) from its patches' geometry, once a solve, appended to `pool`;
 // false if there are more than a block takes.
 bool supportRows(const std::vector<PointConstraint>& cs, BodySupport& s, std::vector<SupportRow>& pool) {
@@ -654,9 +670,8 @@ bool supportRows(const std::vector<PointConstraint>& cs, BodySupport& s, std::ve
         const PointConstraint& f = p.friction;
         const bool on_b = f.b == s.body;
         const double sign = on_b ? 1.0 : -1.0;   // impulses push B along the normal, A against it
-        const bool friction = f.mu > 0.0;
-        const int rows = p.count + (friction ? 2 : 0) + (friction && p.torsion_radius > 0.0 ? 1 : 0);
-        if (s.row_count + rows > kMaxSupportRows) return false;
+        const SupportRowLayout layout = supportRowLayout(p);
+        if (s.row_count + layout.rows > kMaxSupportRows) return false;
         auto add = [&](const Vec3& linear, const Vec3& angular) {
             pool.push_back({sign * linear, sign * angular});
             ++s.row_count;
@@ -665,10 +680,10 @@ bool supportRows(const std::vector<PointConstraint>& cs, BodySupport& s, std::ve
             const PointConstraint& c = cs[static_cast<std::size_t>(i)];
             add(f.n, on_b ? c.rb_n : c.ra_n);
         }
-        if (!friction) continue;
+        if (!layout.friction) continue;
         add(f.t1, on_b ? p.rows.t1.rb : p.rows.t1.ra);
         add(f.t2, on_b ? p.rows.t2.rb : p.rows.t2.ra);
-        if (p.torsion_radius > 0.0) add(Vec3::Zero(), p.torsion_radius * f.n);
+        if (layout.spin) add(Vec3::Zero(), p.torsion_radius * f.n);
     }
     return true;
 }
@@ -690,11 +705,12 @@ bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, B
         const double un_lin = f.n.dot(b.v - a.v);
         for (int i = p.first; i < p.first + p.count; ++i)
             at(e, r++) = normalError(a, b, cs[static_cast<std::size_t>(i)], un_lin);
-        if (!(f.mu > 0.0)) continue;
+        const SupportRowLayout layout = supportRowLayout(p);
+        if (!layout.friction) continue;
         const Eigen::Vector2d slip = centroidSlip(a, b, f, p.rows);
         at(e, r++) = -slip(0);
         at(e, r++) = -slip(1);
-        if (p.torsion_radius > 0.0) at(e, r++) = -p.torsion_radius * (b.w - a.w).dot(f.n);
+        if (layout.spin) at(e, r++) = -p.torsion_radius * (b.w - a.w).dot(f.n);
     }
     Vec3 dv, dw;
     s.block.solve(s.rows, e.data(), dv, dw, x.data());
@@ -710,12 +726,13 @@ bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, B
             if (!(next >= 0.0)) return false;
             normal_sum += next;
         }
-        if (!(f.mu > 0.0)) continue;
+        const SupportRowLayout layout = supportRowLayout(p);
+        if (!layout.friction) continue;
         const double limit = f.mu * normal_sum;
         const Eigen::Vector2d tangent = f.lambda_t + Eigen::Vector2d(at(x, r), at(x, r + 1));
         r += 2;
         if (tangent.squaredNorm() > limit * limit) return false;
-        if (p.torsion_radius > 0.0) {
+        if (layout.spin) {
             const double torsion = p.lambda_torsion + at(x, r++) * p.torsion_radius;
             if (std::abs(torsion) > limit * p.torsion_radius) return false;
         }
@@ -725,10 +742,11 @@ bool relaxSupport(std::vector<WorkBody>& wb, std::vector<PointConstraint>& cs, B
     for (int k = 0; k < s.count; ++k) {
         Patch& p = *s.patches[static_cast<std::size_t>(k)];
         for (int i = 0; i < p.count; ++i) cs[static_cast<std::size_t>(p.first + i)].lambda_n += at(x, r++);
-        if (!(p.friction.mu > 0.0)) continue;
+        const SupportRowLayout layout = supportRowLayout(p);
+        if (!layout.friction) continue;
         p.friction.lambda_t += Eigen::Vector2d(at(x, r), at(x, r + 1));
         r += 2;
-        if (p.torsion_radius > 0.0) p.lambda_torsion += at(x, r++) * p.torsion_radius;
+        if (layout.spin) p.lambda_torsion += at(x, r++) * p.torsion_radius;
     }
     for (int i = 0; i < s.row_count; ++i) {
         const SupportRow& row = s.rows[i];
