@@ -98,7 +98,10 @@ void NativeBackend::fixedTick(double t) {
     std::vector<int>& due = step_due_;
     due.clear();
     for (std::size_t k = 0; k < candidates_.size(); ++k) {
-        if (verdict[k] == kBounded) ++stats_.bounded_pairs;
+        if (verdict[k] == kBounded) {
+            ++stats_.bounded_pairs;
+            pairs_[static_cast<std::size_t>(candidates_[k])].impact_reported = false;   // beyond its reach
+        }
         if (verdict[k] == kDue) due.push_back(candidates_[k]);
     }
     stats_.flight_pair_queries += static_cast<std::int64_t>(due.size());
@@ -109,15 +112,26 @@ void NativeBackend::fixedTick(double t) {
     recycleSamples(samples);
     // A body an impact set moving (or stopped) may now reach a neighbour its pair was sampled too
     // far from, or one the islands' solve held at its old velocity (a row of boxes struck end on).
-    // Its pairs are sampled again at the new velocities, and those that now reach get the collision
-    // phase at t (Newton restitution and friction at their approaching points); a body it changes
-    // faster than gravity does in the tick flies freely for the rest of the tick, and its own pairs
-    // are looked at in the next pass. A few passes carry a blow down a row; the contact phase takes
-    // the new pairs at the next tick.
+    impactPasses(t);
+    // A pair that may still close within the tick by more than its patch reaches (a ball thrown at
+    // a thin wall, a light hull a heavy one set spinning) is looked at again inside the tick.
+    lookInsideTick(t);
+    changed_.clear();
+    syncAllBodies(frame_end_);
+}
+
+void NativeBackend::impactPasses(double t, std::vector<int>* moved) {
+    // The kicked bodies' pairs are sampled again at the new velocities, and those that now reach get
+    // the collision phase at t (Newton restitution and friction at their approaching points); a body
+    // it changes faster than gravity does in the tick flies freely for the rest of the tick, and its
+    // own pairs are looked at in the next pass. A few passes carry a blow down a row; the contact
+    // phase takes the new pairs at the next tick.
+    std::vector<int>& entered = step_entered_;
     for (int pass = 0; pass < kImpactPasses && !island_scratch_.kicked.empty(); ++pass) {
         std::vector<int>& kicked = island_scratch_.kicked;
         std::sort(kicked.begin(), kicked.end());
         kicked.erase(std::unique(kicked.begin(), kicked.end()), kicked.end());
+        if (moved != nullptr) moved->insert(moved->end(), kicked.begin(), kicked.end());
         // Their boxes, swept again at the new velocities: a pair the tick's broad phase left out (a
         // ball bouncing up off the floor) is one again once a blow sends the ball back down.
         entered.clear();
@@ -126,11 +140,13 @@ void NativeBackend::fixedTick(double t) {
         again.clear();
         // A pair still beyond its reach at the new velocities (its distance at t, or the bound
         // on it, against the reach those velocities give) would be queried to no manifold, as in
-        // the tick's own sampling above: it is left out (in a turning drum, two pairs in three).
+        // the tick's own sampling: it is left out (in a turning drum, two pairs in three). Inside
+        // the tick (a look) the bounds, taken at its start, no longer hold.
         for (int body : kicked)
             for (int p : body_pairs_[static_cast<std::size_t>(body)]) {
-                if (settings_.pair_bounds && boundedApart(pairs_[static_cast<std::size_t>(p)])) {
+                if (!inside_tick_ && settings_.pair_bounds && boundedApart(pairs_[static_cast<std::size_t>(p)])) {
                     ++stats_.bounded_pairs;
+                    pairs_[static_cast<std::size_t>(p)].impact_reported = false;   // beyond its reach
                     continue;
                 }
                 again.push_back(p);
@@ -147,8 +163,6 @@ void NativeBackend::fixedTick(double t) {
         for (const PairSample& smp : resampled) markSampled(smp);
         recycleSamples(resampled);
     }
-    changed_.clear();
-    syncAllBodies(frame_end_);
 }
 
 void NativeBackend::impactPass(std::vector<PairSample>& samples, double t) {
@@ -172,12 +186,27 @@ void NativeBackend::impactPass(std::vector<PairSample>& samples, double t) {
             is.solved.push_back(m);
             is.solved.back().body_a = localOf(m.body_a);
             is.solved.back().body_b = localOf(m.body_b);
-            is.resting.push_back(0);   // new this tick: an impact, with its restitution
+            // New at the tick's start: an impact, with its restitution. Inside the tick, a pair touching
+            // since its last sample whose bodies the tick's solve holds is resting: an approach
+            // slower than gravity adds in a tick is the drift's, stopped plastically if at all.
+            const PairState& ps = pairs_[static_cast<std::size_t>(m.pair)];
+            is.resting.push_back(inside_tick_ && ps.touching && heldAt(ps.a, t) && heldAt(ps.b, t) ? 1 : 0);
         }
+    noteApproach(samples);
     // Called from the tick alone (no islands in flight): every worker may share it.
-    collisionPhase(is.local, is.solved, is.resting, scene_.gravity.norm() * (frame_end_ - t), frame_end_ - t,
-                   is.collision, partition_->workers(), is.waves);
+    const double resting_speed = scene_.gravity.norm() * (inside_tick_ ? frame_dt_ : frame_end_ - t);
+    collisionPhase(is.local, is.solved, is.resting, resting_speed, frame_end_ - t, is.collision, partition_->workers(),
+                   is.waves);
     warnCollision(is.collision);
+    // The impulses back on the samples' manifolds: a pair that starts touching here is an event.
+    std::size_t solved = 0;
+    for (PairSample& smp : samples)
+        for (ContactManifold& m : smp.manifolds) {
+            m.collision_impulse = is.solved[solved].collision_impulse;
+            m.contact_impulse = 0.0;
+            ++solved;
+        }
+    emitEvents(samples, t);
     for (std::size_t k = 0; k < is.bodies.size(); ++k) {
         if (is.collision.impulsed[k] == 0) continue;
         const int body = is.bodies[k];
@@ -245,9 +274,14 @@ void NativeBackend::markSampled(const PairSample& s) {
     const bool touching = !s.manifolds.empty();
     ps.touching = touching;
     ps.in_contact = touching && s.distance < scene_.collision_distance;
+    // An impact met early stays reported until the pair touches (then it is a continuing contact),
+    // parts (it is seen leaving) or leaves its reach.
+    if (!touching || ps.in_contact || s.approach < 0.0) ps.impact_reported = false;
     ps.sampled_once = true;
-    ps.gap_bound = s.distance;   // queried at this tick's start (fixed ticks sample at t)
-    ps.gap_step = step_index_;
+    // Queried at this tick's start (fixed ticks sample at t), its distance bounds the pair's from the
+    // next tick's start less the motion since this one's; queried inside the tick, it does not.
+    ps.gap_bound = s.distance;
+    ps.gap_step = inside_tick_ ? -1 : step_index_;
     if (touching ? touching_.insert(s.pair).second : touching_.erase(s.pair) > 0) ticks_dirty_ = true;
 }
 

@@ -128,6 +128,7 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
     recordSamples(samples);
     if (!fixed) deferImpacts(samples, t, frame_end_ - t);   // fixed ticks have no event to defer to
+    if (fixed) noteApproach(samples);
 
     // Manifolds of the due islands, warm started from their pairs' caches.
     // The island's tick ends on the grid of sub-steps (frame_dt / contact_substeps, anchored at the
@@ -622,20 +623,27 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
 
 void NativeBackend::emitEvents(const std::vector<PairSample>& samples, double t) {
     // One event per pair that starts touching with a positive impulse: at its strongest manifold.
+    // Fixed ticks meet an impact before touching (a speculative point reaching within the tick):
+    // it is reported at the time the pair would have touched at its approach speed.
+    const bool fixed = fixedTicks(settings_.touching);
     for (const PairSample& s : samples) {
         if (s.manifolds.empty()) continue;
-        const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
-        if (ps.in_contact || !(s.distance < scene_.collision_distance)) continue;   // continuing, or not yet
-        double sum = 0.0;
+        PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        if (ps.in_contact || ps.impact_reported) continue;   // continuing, or met early and reported
+        const bool early = fixed && !(s.distance < scene_.collision_distance);
+        if (early && !(s.approach > 0.0)) continue;   // not yet
+        if (!early && !(s.distance < scene_.collision_distance)) continue;
+        double sum = 0.0, collision = 0.0;
         const ContactManifold* best = nullptr;
         for (const ContactManifold& m : s.manifolds) {
             const double j = m.collision_impulse + m.contact_impulse;
             if (best == nullptr || j > best->collision_impulse + best->contact_impulse) best = &m;
             sum += j;
+            collision += m.collision_impulse;
         }
-        if (!(sum > 0.0)) continue;
+        if (!(sum > 0.0) || (early && !(collision > 0.0))) continue;
         CollisionEvent e;
-        e.time = t;
+        e.time = fixed && s.approach > 0.0 ? std::min(t + std::max(0.0, s.distance) / s.approach, frame_end_) : t;
         e.body_a = ps.a;
         e.body_b = ps.b;
         e.point = best->centroid;
@@ -643,6 +651,25 @@ void NativeBackend::emitEvents(const std::vector<PairSample>& samples, double t)
         e.impulse = sum;
         events_.push_back(e);
         ++stats_.collisions;
+        ps.impact_reported = early;   // until the pair parts beyond its reach (markSampled)
+    }
+}
+
+void NativeBackend::noteApproach(std::vector<PairSample>& samples) const {
+    // Only a pair that may report an impact (not in contact) or has one reported reads it.
+    for (PairSample& s : samples) {
+        s.approach = 0.0;
+        const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
+        if (ps.in_contact && !ps.impact_reported) continue;
+        for (const ContactManifold& m : s.manifolds) {
+            const RigidBody& a = bodies_[static_cast<std::size_t>(m.body_a)];
+            const RigidBody& b = bodies_[static_cast<std::size_t>(m.body_b)];
+            const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
+            for (const Vec3& p : m.points) {
+                const Vec3 u = (b.velocity + wb.cross(p - b.com)) - (a.velocity + wa.cross(p - a.com));
+                s.approach = std::max(s.approach, -u.dot(m.normal));
+            }
+        }
     }
 }
 

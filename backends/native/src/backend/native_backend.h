@@ -12,6 +12,7 @@
 // (island_step.cpp), advance (body_motion.cpp); this file wires the frame.
 #pragma once
 
+#include <limits>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -71,6 +72,7 @@ private:
         std::vector<ManifoldAnchor> anchors;           // same indexing: last queried manifolds (carried)
         bool touching = false;                         // at its last sample: it had a manifold (islands)
         bool in_contact = false;                       // at its last sample: closer than the collision distance
+        bool impact_reported = false;                  // fixed ticks: its impact, met before touching, is reported
         bool sampled_once = false;
         bool in_broad_phase = false;
         std::int64_t sampled_step = -1;                // internal step of the last sample
@@ -79,6 +81,11 @@ private:
         // internal step `gap_step` (its last queried distance, less its bodies' motion since).
         double gap_bound = 0.0;
         std::int64_t gap_step = -1;
+        // Fixed ticks: its next look inside this tick (lookInsideTick; kNever: none) and how many
+        // it had in the tick of internal step `looks_step`.
+        double look_at = std::numeric_limits<double>::infinity();
+        int looks = 0;
+        std::int64_t looks_step = -1;
         // The storage of the pair's last sample, handed back after the step (recycleSamples) and
         // reused by its next one: sampling allocates nothing once every pair has been sampled.
         std::vector<ContactManifold> spare_manifolds;
@@ -98,6 +105,9 @@ private:
         bool deferred = false;   ///< approaching impact moved to its refined touching time (deferImpacts)
         double contact_time = 0.0;   ///< [s] deferred: when it is resolved (the refined touching time)
         double reach = 0.0;          ///< [m] the patch reach the manifolds were built with (patchReach)
+        /// [m/s] fixed ticks: approach speed at the closest point before the collision phase (an
+        /// impact met before touching is reported at its touching time, emitEvents)
+        double approach = 0.0;
     };
 
     // --- the step (native_backend.cpp) ---
@@ -118,15 +128,43 @@ private:
     void fixedTick(double t);
     /// Fixed ticks: the collision phase at time t of the manifolds in `samples` (pairs a body an
     /// impact set moving now reaches); the bodies it changes fly freely from t and are recorded as
-    /// kicked (island_scratch_.kicked).
+    /// kicked (island_scratch_.kicked). Inside the tick (a look), a pair touching since its last
+    /// sample between held bodies is resting, not an impact.
     void impactPass(std::vector<PairSample>& samples, double t);
+    /// Fixed ticks: up to 16 passes at time t sampling again the pairs of the bodies an impact set
+    /// moving (island_scratch_.kicked) and giving those that now reach the collision phase
+    /// (impactPass); the bodies each pass takes are added to `moved` if given. The pairs' distance
+    /// bounds skip pairs at the tick's start only.
+    void impactPasses(double t, std::vector<int>* moved = nullptr);
+    /// Fixed ticks: after the tick's solve at t, each pair that may close by more than its patch
+    /// reaches before the tick ends is looked at again inside it (nextLook), with the collision phase
+    /// and its impact passes there, or its islands solved there where a pair in flight meets, up to
+    /// native.max_tick_looks times a pair (tick_looks.cpp).
+    void lookInsideTick(double t);
+    /// Fixed ticks: when the pair, at its last distance (sampled at `from`, or bounded at the tick's
+    /// start), could first have closed to the collision distance or by its reach, its bodies
+    /// turning at `wa` and `wb` [rad/s]; kNever if it cannot close by more than its reach before the
+    /// tick ends.
+    double nextLook(const PairState& ps, double from, const Vec3& wa, const Vec3& wb) const;
+    /// Fixed ticks: a manifold of the sample has a point touching, or reaching the speculative target
+    /// before the tick ends, that approaches faster than gravity adds in a tick.
+    bool impacting(const PairSample& s, double t) const;
+    /// Fixed ticks, at a look at time t: the islands the looked-at pair (samples' only entry) joins,
+    /// their touching pairs sampled at t, solved from t to the tick's end; their bodies are added
+    /// to `moved`.
+    void lookIslandSolve(std::vector<PairSample>& samples, double t, std::vector<int>& moved);
+    /// [m/s] bound on how fast the pair's material points at one place move relative to each other
+    /// over the next `rest` [s] (relative COM motion and the difference of the two turns `wa`, `wb`
+    /// [rad/s], about either centre, growing by precession and gravity): how fast the pair can close.
+    double pointSpeedBound(const PairState& ps, double rest, const Vec3& wa, const Vec3& wb) const;
     /// Fixed ticks: an impulse changed `body` from `before` to `after` by more than gravity does in
     /// `tick` [s] (COM speed plus |Δω| × outer radius): an impact, not a resting contact's stop.
     bool kickedFaster(const RigidBody& before, const RigidBody& after, int body, double tick) const;
     /// A change of `body`'s COM velocity by `dv` and angular velocity by `dw` exceeds what gravity
     /// does in `tick` [s]: |dv| + |dw| x outer radius > g x tick (kickedFaster, impactingContact).
     bool changedFaster(const Vec3& dv, const Vec3& dw, int body, double tick) const;
-    /// The pair's touching state after a sample at a fixed tick (no queue key, no protection tick).
+    /// The pair's touching state after a sample at a fixed tick (no queue key, no protection tick);
+    /// its distance becomes the pair's bound if sampled at the tick's start (not in a look).
     void markSampled(const PairSample& s);
     /// [s] the earliest queue key or island tick, not before t.
     double nextEventTime(double t);
@@ -217,6 +255,10 @@ private:
     /// true if an impulse was applied; marks the movable ones in `impulsed`, troubles in `tally`.
     bool manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
                         double tick, std::vector<std::uint8_t>& impulsed, CollisionTally& tally) const;
+    /// Fixed ticks: each sample's fastest approach over its manifolds' points, at the bodies'
+    /// velocities now (before the collision phase: emitEvents' touching time); 0 for a pair in
+    /// contact with no impact reported, which reads none.
+    void noteApproach(std::vector<PairSample>& samples) const;
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Counts a collision phase's troubles as warnings.
     void warnCollision(const CollisionPhaseReport& report);
@@ -314,7 +356,13 @@ private:
     std::vector<int> candidates_merge_;     // updateBroadPhase's buffer, swapped with candidates_
     std::vector<std::uint8_t> sync_failed_; // syncAllBodies: per body, its state went non-finite
     // Per-step buffers, emptied and refilled at every internal step: no allocation once warm.
-    std::vector<int> step_due_, step_entered_, step_again_;
+    std::vector<int> step_due_, step_entered_, step_again_, step_fast_, step_kicked_;
+    std::vector<std::pair<double, int>> step_looks_;
+    std::vector<int> step_look_bodies_, step_look_pairs_;
+    std::vector<double> step_point_speed_;   // lookInsideTick: each body's fastest point
+    std::vector<Vec3> step_turn_;            // lookInsideTick: each body's angular velocity at the tick
+    std::vector<std::uint8_t> look_mark_;   // lookIslandSolve: bodies already taken (cleared after)
+    bool inside_tick_ = false;              // fixed ticks: sampling at a look inside a tick
     std::vector<std::uint8_t> step_verdict_;   // fixedTick: per candidate pair, skipped, bounded or due
     std::vector<PairSample> step_samples_, step_resampled_, step_extra_;
     SortedIndexSet touching_;               // pairs_ indices of touching pairs (ascending)

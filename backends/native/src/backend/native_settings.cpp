@@ -75,6 +75,11 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "relative to each other since its last query is not queried again: its manifold is carried "
                  "along by the motion (separations from the points' anchors on both bodies). 0: every solve "
                  "queries and clips every touching pair (docs/native-narrowphase.md, \"Carried manifolds\")"});
+    s.push_back({"native.max_tick_looks", T::Integer, "64", 0, 100000, {},
+                 "fixed ticks: the most looks inside one tick at a pair that may close farther within it than "
+                 "its speculative reach (a ball thrown at a thin wall, a hull an impact set spinning): each "
+                 "when the pair could first have closed to the collision distance or by its reach, with the "
+                 "collision phase there; 0: none (docs/native-dynamics.md, \"Looks inside a tick\")"});
     s.push_back({"native.pair_bounds", T::Boolean, "true", 0, 0, {},
                  "fixed ticks: a pair apart is not queried while a lower bound on its distance (its last "
                  "one, minus how far its bodies' points have moved since) stays beyond its reach; false: every "
@@ -188,6 +193,7 @@ NativeSettings NativeSettings::from(const Settings& settings) {
         n.protection_ring = static_cast<int>(settings.integer("native.protection_ring"));
     if (has("native.manifold_reuse")) n.manifold_reuse = settings.real("native.manifold_reuse");
     if (has("native.pair_bounds")) n.pair_bounds = settings.boolean("native.pair_bounds");
+    if (has("native.max_tick_looks")) n.max_tick_looks = static_cast<int>(settings.integer("native.max_tick_looks"));
     if (has("native.max_fixed_ticks")) n.max_fixed_ticks = static_cast<int>(settings.integer("native.max_fixed_ticks"));
     if (has("native.speculative_reach")) n.speculative_reach = settings.real("native.speculative_reach");
     if (has("native.touching"))

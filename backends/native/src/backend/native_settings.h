@@ -84,6 +84,9 @@ struct NativeSettings {
     /// minus how far its bodies' points have moved since) stays beyond its reach (false: every pair
     /// queried at every tick; the same results, for checking and measurement)
     bool pair_bounds = true;
+    /// Fixed ticks: the most looks inside one tick at a pair that may close farther within it than
+    /// its patch reaches (conservative advancement to the collision distance); 0: none
+    int max_tick_looks = 64;
     int soft_substeps = 4;                  ///< soft regime: sub-steps per island tick
     double soft_hertz = 60.0;               ///< [Hz] soft regime: stiffness of the push-out
     int soft_iterations = 4;                ///< soft regime: relaxations with the push-out per sub-step

@@ -42,6 +42,10 @@ struct NativeStatistics {
     std::int64_t local_held_bodies = 0;
     std::int64_t solved_island_bodies = 0;  ///< bodies of the islands solved, summed over solves
     std::int64_t fixed_impact_passes = 0;   ///< fixed ticks: passes after an impact set bodies moving
+    std::int64_t fixed_looked_ticks = 0;   ///< fixed ticks: ticks with a pair that may close beyond its reach
+    std::int64_t fixed_tick_looks = 0;     ///< fixed ticks: looks inside ticks at such pairs
+    std::int64_t fixed_looks_cut = 0;      ///< fixed ticks: pairs that reached native.max_tick_looks in a tick
+    std::int64_t fixed_look_solves = 0;    ///< fixed ticks: islands solved at a look (a pair in flight met)
     std::int64_t bounded_pairs = 0;   ///< fixed ticks: pair queries skipped, bounded beyond reach (pair_bounds)
     /// [m] deepest penetration a pair's sample found (before a contact phase pushed it out)
     double deepest_penetration = 0.0;
@@ -84,6 +88,10 @@ struct NativeStatistics {
             static_cast<double>(solved_island_bodies) / static_cast<double>(std::max<std::int64_t>(1, step_solves));
         s["deepest_penetration_m"] = deepest_penetration;
         s["fixed_impact_passes"] = static_cast<double>(fixed_impact_passes);
+        s["fixed_looked_ticks"] = static_cast<double>(fixed_looked_ticks);
+        s["fixed_tick_looks"] = static_cast<double>(fixed_tick_looks);
+        s["fixed_looks_cut"] = static_cast<double>(fixed_looks_cut);
+        s["fixed_look_solves"] = static_cast<double>(fixed_look_solves);
         s["bounded_pairs"] = static_cast<double>(bounded_pairs);
         return vocabulary::prefixed(s, "native");
     }

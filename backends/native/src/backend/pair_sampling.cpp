@@ -110,6 +110,7 @@ void NativeBackend::updateBroadPhase(bool all, std::vector<int>& entered) {
         const int idx = pair_index_.at(pairKey(bp.a, bp.b));
         PairState& ps = pairs_[static_cast<std::size_t>(idx)];
         ps.in_broad_phase = false;   // its boxes parted: it cannot touch before they meet again
+        ps.impact_reported = false;
         queue_.removePair(idx);
         if (ps.touching) {
             ps.touching = false;
