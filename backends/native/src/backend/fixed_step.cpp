@@ -98,10 +98,7 @@ void NativeBackend::fixedTick(double t) {
     std::vector<int>& due = step_due_;
     due.clear();
     for (std::size_t k = 0; k < candidates_.size(); ++k) {
-        if (verdict[k] == kBounded) {
-            ++stats_.bounded_pairs;
-            pairs_[static_cast<std::size_t>(candidates_[k])].impact_reported = false;   // beyond its reach
-        }
+        if (verdict[k] == kBounded) passOverBounded(candidates_[k]);
         if (verdict[k] == kDue) due.push_back(candidates_[k]);
     }
     stats_.flight_pair_queries += static_cast<std::int64_t>(due.size());
@@ -145,8 +142,7 @@ void NativeBackend::impactPasses(double t, std::vector<int>* moved) {
         for (int body : kicked)
             for (int p : body_pairs_[static_cast<std::size_t>(body)]) {
                 if (!inside_tick_ && settings_.pair_bounds && boundedApart(pairs_[static_cast<std::size_t>(p)])) {
-                    ++stats_.bounded_pairs;
-                    pairs_[static_cast<std::size_t>(p)].impact_reported = false;   // beyond its reach
+                    passOverBounded(p);
                     continue;
                 }
                 again.push_back(p);
@@ -258,6 +254,11 @@ void NativeBackend::lowerGapBounds() {
 bool NativeBackend::boundedApart(const PairState& ps) const {
     if (ps.touching || ps.gap_step != step_index_) return false;
     return ps.gap_bound >= std::max(scene_.collision_distance, patchReach(ps));
+}
+
+void NativeBackend::passOverBounded(int pair) {
+    ++stats_.bounded_pairs;
+    pairs_[static_cast<std::size_t>(pair)].impact_reported = false;   // beyond its reach: it has parted
 }
 
 bool NativeBackend::kickedFaster(const RigidBody& before, const RigidBody& after, int body, double tick) const {

@@ -561,6 +561,12 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
     for (std::size_t w = 0; w < team; ++w) addTally(tallies[w]);
 }
 
+bool NativeBackend::meetsNow(const ContactManifold& m, std::size_t i, double approach, double tick, double cd) {
+    // Touching (within the collision distance), or a speculative point that reaches the speculative
+    // target (half the collision distance) within the tick at its approach speed.
+    return !(i < m.point_gap.size() && !(m.point_gap[i] < cd) && !(approach * tick >= m.point_gap[i] - 0.5 * cd));
+}
+
 bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
                                    double tick, std::vector<std::uint8_t>& impulsed, CollisionTally& tally) const {
     // The points that touch now, and the speculative ones that reach the speculative target within
@@ -570,14 +576,14 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
     // by |u| h / 2). Two or more make a patch.
     const double cd = scene_.collision_distance;
     const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
-    auto approach = [&](const Vec3& p) { return -((b.velocity + wb.cross(p - b.com)) - (a.velocity + wa.cross(p - a.com))).dot(m.normal); };
+    auto approach = [&](const Vec3& p) { return approachAt(a, wa, b, wb, p, m.normal); };
     // Every manifold passes here at every collision sweep: its points in place, as the manifold's.
     PointArray<Vec3> selected;
     PointArray<double> selected_restitution;
     double fastest = 0.0;   // [m/s] largest approach speed of a selected point
     for (std::size_t i = 0; i < m.points.size(); ++i) {
         const double in = approach(m.points[i]);
-        if (i < m.point_gap.size() && !(m.point_gap[i] < cd) && !(in * tick >= m.point_gap[i] - 0.5 * cd)) continue;
+        if (!meetsNow(m, i, in, tick, cd)) continue;
         const bool plastic = in < settings_.restitution_threshold || (resting && in <= resting_speed);
         selected.push_back(m.points[i]);
         selected_restitution.push_back(plastic ? 0.0 : m.restitution);
@@ -665,10 +671,7 @@ void NativeBackend::noteApproach(std::vector<PairSample>& samples) const {
             const RigidBody& a = bodies_[static_cast<std::size_t>(m.body_a)];
             const RigidBody& b = bodies_[static_cast<std::size_t>(m.body_b)];
             const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
-            for (const Vec3& p : m.points) {
-                const Vec3 u = (b.velocity + wb.cross(p - b.com)) - (a.velocity + wa.cross(p - a.com));
-                s.approach = std::max(s.approach, -u.dot(m.normal));
-            }
+            for (const Vec3& p : m.points) s.approach = std::max(s.approach, approachAt(a, wa, b, wb, p, m.normal));
         }
     }
 }

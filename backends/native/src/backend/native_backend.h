@@ -121,6 +121,9 @@ private:
     void lowerGapBounds();
     /// Fixed ticks: the pair is apart by more than it can reach within this tick (by its bound).
     bool boundedApart(const PairState& ps) const;
+    /// Fixed ticks: the pair is not queried, bounded beyond its reach (counted; an impact reported
+    /// early for it is over).
+    void passOverBounded(int pair);
     /// Fixed ticks for the frame of `dt` [s] from time_: native.contact_substeps, or more (up to
     /// native.max_fixed_ticks) where a pair may close farther within a tick than its patch reaches.
     int fixedTicksFor(double dt);
@@ -142,10 +145,9 @@ private:
     /// native.max_tick_looks times a pair (tick_looks.cpp).
     void lookInsideTick(double t);
     /// Fixed ticks: when the pair, at its last distance (sampled at `from`, or bounded at the tick's
-    /// start), could first have closed to the collision distance or by its reach, its bodies
-    /// turning at `wa` and `wb` [rad/s]; kNever if it cannot close by more than its reach before the
-    /// tick ends.
-    double nextLook(const PairState& ps, double from, const Vec3& wa, const Vec3& wb) const;
+    /// start), could first have closed to the collision distance or by its reach; kNever if it
+    /// cannot close by more than its reach before the tick ends.
+    double nextLook(const PairState& ps, double from) const;
     /// Fixed ticks: a manifold of the sample has a point touching, or reaching the speculative target
     /// before the tick ends, that approaches faster than gravity adds in a tick.
     bool impacting(const PairSample& s, double t) const;
@@ -154,9 +156,9 @@ private:
     /// to `moved`.
     void lookIslandSolve(std::vector<PairSample>& samples, double t, std::vector<int>& moved);
     /// [m/s] bound on how fast the pair's material points at one place move relative to each other
-    /// over the next `rest` [s] (relative COM motion and the difference of the two turns `wa`, `wb`
-    /// [rad/s], about either centre, growing by precession and gravity): how fast the pair can close.
-    double pointSpeedBound(const PairState& ps, double rest, const Vec3& wa, const Vec3& wb) const;
+    /// over the next `rest` [s] (relative COM motion and the difference of the two turns, about
+    /// either centre, growing by precession and gravity): how fast the pair can close (nextLook).
+    double pointSpeedBound(const PairState& ps, double rest) const;
     /// Fixed ticks: an impulse changed `body` from `before` to `after` by more than gravity does in
     /// `tick` [s] (COM speed plus |Δω| × outer radius): an impact, not a resting contact's stop.
     bool kickedFaster(const RigidBody& before, const RigidBody& after, int body, double tick) const;
@@ -249,6 +251,10 @@ private:
     void collisionPhase(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                         const std::vector<std::uint8_t>& resting, double resting_speed, double tick,
                         CollisionPhaseReport& report, int workers, ImpulseWaves& waves) const;
+    /// The manifold's point i, approaching at `approach` [m/s], meets the collision phase now: it
+    /// touches (closer than `cd`), or reaches half of `cd` within `tick` [s] (manifoldCollision's
+    /// selection; lookInsideTick's test for an impact).
+    static bool meetsNow(const ContactManifold& m, std::size_t i, double approach, double tick, double cd);
     /// The collision phase of one manifold (Newton-Coulomb): its touching points and the speculative
     /// ones reached within `tick` [s]; one point gets the coupled impulse of newton_coulomb.h, two or
     /// more Newton restitution per point with patch friction (patch_impulse.h). Applied to a and b;
@@ -356,11 +362,10 @@ private:
     std::vector<int> candidates_merge_;     // updateBroadPhase's buffer, swapped with candidates_
     std::vector<std::uint8_t> sync_failed_; // syncAllBodies: per body, its state went non-finite
     // Per-step buffers, emptied and refilled at every internal step: no allocation once warm.
-    std::vector<int> step_due_, step_entered_, step_again_, step_fast_, step_kicked_;
+    std::vector<int> step_due_, step_entered_, step_again_, step_look_pair_, step_kicked_;
     std::vector<std::pair<double, int>> step_looks_;
     std::vector<int> step_look_bodies_, step_look_pairs_;
     std::vector<double> step_point_speed_;   // lookInsideTick: each body's fastest point
-    std::vector<Vec3> step_turn_;            // lookInsideTick: each body's angular velocity at the tick
     std::vector<std::uint8_t> look_mark_;   // lookIslandSolve: bodies already taken (cleared after)
     bool inside_tick_ = false;              // fixed ticks: sampling at a look inside a tick
     std::vector<std::uint8_t> step_verdict_;   // fixedTick: per candidate pair, skipped, bounded or due

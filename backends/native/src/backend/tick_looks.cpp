@@ -28,15 +28,10 @@ void NativeBackend::lookInsideTick(double t) {
     std::vector<Look>& looks = step_looks_;
     looks.clear();
     const auto later = std::greater<Look>();
-    // Each body's turn at the tick's start, for the first scan (inside it, from the bodies).
-    std::vector<Vec3>& turn = step_turn_;
-    bool scanning = true;
     auto schedule = [&](int p, double from) {
         PairState& ps = pairs_[static_cast<std::size_t>(p)];
         ps.look_at = kNever;
-        const double next = scanning ? nextLook(ps, from, turn[static_cast<std::size_t>(ps.a)], turn[static_cast<std::size_t>(ps.b)])
-                                     : nextLook(ps, from, bodies_[static_cast<std::size_t>(ps.a)].angularVelocity(),
-                                                bodies_[static_cast<std::size_t>(ps.b)].angularVelocity());
+        const double next = nextLook(ps, from);
         if (!(next < frame_end_)) return;
         if (ps.looks_step != step_index_) {
             ps.looks_step = step_index_;
@@ -56,11 +51,8 @@ void NativeBackend::lookInsideTick(double t) {
     const double h = frame_end_ - t, fall = scene_.gravity.norm() * h;
     std::vector<double>& fastest = step_point_speed_;
     fastest.resize(bodies_.size());
-    turn.resize(bodies_.size());
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
         fastest[i] = bodies_[i].velocity.norm() + bodies_[i].maxAngularSpeed() * shapes_[i].outer_radius;
-        turn[i] = bodies_[i].angularVelocity();
-    }
     for (int p : candidates_) {
         const PairState& ps = pairs_[static_cast<std::size_t>(p)];
         if (ps.gap_step != step_index_) continue;
@@ -69,10 +61,9 @@ void NativeBackend::lookInsideTick(double t) {
         if (!(most > settings_.speculativeReach() * smallerInnerRadius(ps, true))) continue;
         schedule(p, t);
     }
-    scanning = false;
     if (looks.empty()) return;
     ++stats_.fixed_looked_ticks;
-    std::vector<int>& one = step_fast_;
+    std::vector<int>& one = step_look_pair_;
     std::vector<int>& moved = step_kicked_;
     std::vector<PairSample>& samples = step_resampled_;
     inside_tick_ = true;
@@ -121,10 +112,10 @@ bool NativeBackend::impacting(const PairSample& s, double t) const {
     for (const ContactManifold& m : s.manifolds) {
         const RigidBody& a = bodies_[static_cast<std::size_t>(m.body_a)];
         const RigidBody& b = bodies_[static_cast<std::size_t>(m.body_b)];
+        const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
         for (std::size_t i = 0; i < m.points.size(); ++i) {
-            const double in = -(b.pointVelocity(m.points[i]) - a.pointVelocity(m.points[i])).dot(m.normal);
-            if (i < m.point_gap.size() && !(m.point_gap[i] < cd) && !(in * rest >= m.point_gap[i] - 0.5 * cd)) continue;
-            if (in > quiet) return true;
+            const double in = approachAt(a, wa, b, wb, m.points[i], m.normal);
+            if (meetsNow(m, i, in, rest, cd) && in > quiet) return true;
         }
     }
     return false;
@@ -166,7 +157,7 @@ void NativeBackend::lookIslandSolve(std::vector<PairSample>& samples, double t, 
     moved.insert(moved.end(), bodies.begin(), bodies.end());
 }
 
-double NativeBackend::pointSpeedBound(const PairState& ps, double rest, const Vec3& wa, const Vec3& wb) const {
+double NativeBackend::pointSpeedBound(const PairState& ps, double rest) const {
     // B's material point at x moves relative to A's at x with (v_b - v_a) + w_b x (c_a - c_b) +
     // (w_b - w_a) x (x - c_a): within A's outer radius R_a of A's centre, at most the length of the
     // first two terms plus |w_b - w_a| R_a; the same about B's centre; the smaller of the two. Two
@@ -177,6 +168,7 @@ double NativeBackend::pointSpeedBound(const PairState& ps, double rest, const Ve
     // gravity adds g per second.
     const RigidBody& a = bodies_[static_cast<std::size_t>(ps.a)];
     const RigidBody& b = bodies_[static_cast<std::size_t>(ps.b)];
+    const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
     const Vec3 dv = b.velocity - a.velocity, apart = b.com - a.com;
     const double ra = shapes_[static_cast<std::size_t>(ps.a)].outer_radius;
     const double rb = shapes_[static_cast<std::size_t>(ps.b)].outer_radius;
@@ -191,7 +183,7 @@ double NativeBackend::pointSpeedBound(const PairState& ps, double rest, const Ve
     return std::min(about_a, about_b) + (one_ground ? scene_.gravity.norm() * rest : 0.0);
 }
 
-double NativeBackend::nextLook(const PairState& ps, double from, const Vec3& wa, const Vec3& wb) const {
+double NativeBackend::nextLook(const PairState& ps, double from) const {
     // The pair's distance at `from` (sampled there, or its bound at the tick's start) closes at
     // most at the closing-speed bound: it cannot reach the collision distance before the time
     // returned, nor close by more than its patch reaches (the cap) between two looks.
@@ -199,7 +191,7 @@ double NativeBackend::nextLook(const PairState& ps, double from, const Vec3& wa,
     if (!(cap > 0.0) || !(cap < kNever)) return kNever;   // two bodies that cannot move
     const double rest = frame_end_ - from;
     // Either bound holds: every point's own speed, or the material points' relative motion.
-    const double speed = std::min(closingSpeed(ps, rest), pointSpeedBound(ps, rest, wa, wb));
+    const double speed = std::min(closingSpeed(ps, rest), pointSpeedBound(ps, rest));
     if (!(speed * rest > cap)) return kNever;   // within its reach to the tick's end
     const double gap = std::isfinite(ps.gap_bound) ? ps.gap_bound : 0.0;
     return from + std::max(cap, gap - scene_.collision_distance) / speed;

@@ -56,4 +56,10 @@ struct RigidBody {
     void setFromState(const Pose& pose, const Vec3& linear_velocity, const Vec3& angular_velocity);
 };
 
+/// [m/s] how fast B's material point at world `p` approaches A's along `n` (from A to B), the bodies
+/// turning at `wa` and `wb` [rad/s] (their angularVelocity(), taken once for many points).
+inline double approachAt(const RigidBody& a, const Vec3& wa, const RigidBody& b, const Vec3& wb, const Vec3& p, const Vec3& n) {
+    return -((b.velocity + wb.cross(p - b.com)) - (a.velocity + wa.cross(p - a.com))).dot(n);
+}
+
 }  // namespace vroc::native
