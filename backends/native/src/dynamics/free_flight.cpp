@@ -75,6 +75,7 @@ int advanceTorqueFree(RigidBody& body, double h) {
         if (!(speed > 0.0)) return 0;
         const Eigen::AngleAxisd turn(speed * h, w / speed);
         body.orientation = (Quat(turn) * body.orientation).normalized();
+        body.refreshAngularVelocity();
         return 1;
     }
     const int n = std::max(1, static_cast<int>(std::ceil(wmax * h / kMaxSubstepAngle)));
@@ -94,6 +95,7 @@ int advanceTorqueFree(RigidBody& body, double h) {
     const Vec3 body_momentum = q.conjugate() * l;
     q = (q * energyCorrection(body_momentum, ib, body.rotational_energy)).normalized();
     body.orientation = q;
+    body.refreshAngularVelocity();
     return n;
 }
 

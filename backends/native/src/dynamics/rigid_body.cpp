@@ -18,11 +18,16 @@ void RigidBody::setAngularVelocity(const Vec3& omega) {
     refreshEnergy();
 }
 
-Vec3 RigidBody::angularVelocity() const {
-    if (is_static) return Vec3::Zero();
-    if (is_kinematic) return kinematic_angular_velocity;
+Vec3 RigidBody::computeAngularVelocity() const {
     // Body-frame form keeps the product cheap and symmetric: omega = R I^-1 R^T L.
     return orientation * (inv_inertia_body * (orientation.conjugate() * angular_momentum));
+}
+
+void RigidBody::refreshAngularVelocity() {
+    if (infiniteMass()) return;
+    omega_ = computeAngularVelocity();
+    omega_orientation_ = orientation.coeffs();
+    omega_momentum_ = angular_momentum;
 }
 
 Pose RigidBody::framePose() const {
@@ -40,6 +45,7 @@ void RigidBody::applyImpulse(const Vec3& impulse, const Vec3& p) {
 }
 
 void RigidBody::refreshEnergy() {
+    refreshAngularVelocity();
     rotational_energy = infiniteMass() ? 0.0 : 0.5 * angular_momentum.dot(angularVelocity());
 }
 

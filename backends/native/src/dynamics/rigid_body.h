@@ -3,6 +3,9 @@
 // momentum stored (not angular velocity) so torque-free flight conserves it exactly.
 #pragma once
 
+#include <cstring>
+#include <limits>
+
 #include "vroc/core/math.h"
 #include "vroc/core/scene.h"
 
@@ -34,8 +37,19 @@ struct RigidBody {
     /// Sets the angular momentum so that the body turns at `omega` [rad/s, world] (L = I_world omega)
     /// and re-derives the energy reference.
     void setAngularVelocity(const Vec3& omega);
-    /// [rad/s] world angular velocity, I_world^-1 L.
-    Vec3 angularVelocity() const;
+    /// [rad/s] world angular velocity, I_world^-1 L: the value stored by the last refresh while the
+    /// orientation and L are bit for bit those it was taken from, else computed afresh (the same bits
+    /// either way; a reader never writes, so workers may read one body at once).
+    Vec3 angularVelocity() const {
+        if (is_static) return Vec3::Zero();
+        if (is_kinematic) return kinematic_angular_velocity;
+        if (std::memcmp(omega_orientation_.data(), orientation.coeffs().data(), sizeof(double) * 4) == 0 &&
+            std::memcmp(omega_momentum_.data(), angular_momentum.data(), sizeof(double) * 3) == 0)
+            return omega_;
+        return computeAngularVelocity();
+    }
+    /// Stores ω for the current orientation and L (after either changes: refreshEnergy does it).
+    void refreshAngularVelocity();
     /// [m/s] world velocity of the material point at world position `p`.
     Vec3 pointVelocity(const Vec3& p) const { return velocity + angularVelocity().cross(p - com); }
     /// Scene body frame -> world.
@@ -54,6 +68,13 @@ struct RigidBody {
 
     static RigidBody fromScene(const Body& body);
     void setFromState(const Pose& pose, const Vec3& linear_velocity, const Vec3& angular_velocity);
+
+private:
+    Vec3 computeAngularVelocity() const;
+    // ω as last stored, and the orientation coefficients and L it was taken from (NaN: none yet).
+    Vec3 omega_ = Vec3::Zero();
+    Eigen::Vector4d omega_orientation_ = Eigen::Vector4d::Constant(std::numeric_limits<double>::quiet_NaN());
+    Vec3 omega_momentum_ = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 /// [m/s] how fast B's material point at world `p` approaches A's along `n` (from A to B), the bodies
