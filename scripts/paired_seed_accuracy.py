@@ -12,7 +12,7 @@ how many seeds each build won (a two-sided sign test over the seeds where they d
 
 With the same binary as --before and --after and --set-after KEY=VALUE, it compares two settings.
 
-Kinds: mixed_pile (200 bodies), bin_boxes, bin_hulls (100 bodies), bin_boxes400 (400 boxes falling
+Kinds: mixed_pile (200 bodies), bin_boxes, bin_hulls, bin_spheres (100 bodies), bin_boxes400 (400 boxes falling
 into a bin from up to 5.6 m), drum (200 boxes in a tracked drum turning at 1 rad/s). Statistics: native.deepest_penetration_m,
 native.position_corrections, the penetration_recovered warnings, and the sum of step times.
 """
@@ -27,6 +27,7 @@ KINDS = {
     "mixed_pile": lambda seed: g.mixed_pile(seed=seed, name=f"mixed_pile200_seed{seed}"),
     "bin_boxes": lambda seed: _named(g.bin_scene("boxes", 100, (0.04, 0.1), seed), f"bin_boxes100_seed{seed}"),
     "bin_hulls": lambda seed: _named(g.bin_scene("hulls", 100, (0.04, 0.1), seed), f"bin_hulls100_seed{seed}"),
+    "bin_spheres": lambda seed: _named(g.bin_scene("spheres", 100, (0.04, 0.1), seed), f"bin_spheres100_seed{seed}"),
     "bin_boxes400": lambda seed: _named(g.bin_boxes400(seed=seed), f"bin_boxes400_seed{seed}"),
     "drum": lambda seed: g.drum(seed=seed, name=f"drum_boxes200_seed{seed}"),
 }

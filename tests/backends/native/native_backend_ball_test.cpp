@@ -22,14 +22,15 @@ struct Bounce {
 // Drops a ball of radius r from bottom height h above the floor top (z = 0); returns the bottom
 // height at the first impact (the contact level) and the bounces.
 std::vector<Bounce> dropBall(double restitution, double h, int bounces, double& contact_level,
-                             ResponseModel model = ResponseModel::NewtonCoulomb, double collision_distance = 1e-4) {
+                             ResponseModel model = ResponseModel::NewtonCoulomb, double collision_distance = 1e-4,
+                             const NativeSettings& base = NativeSettings{}) {
     const double r = 0.1;
     const double g = 9.81;
     Scene s = bareScene(collision_distance);
     const int mat = addMaterial(s, restitution, 0.5);
     addFloor(s, mat, 20.0);
     const int ball = addBody(s, "ball", Shape::sphere(r), at(Vec3(0, 0, h + r)), mat, false);
-    NativeSettings ns;
+    NativeSettings ns = base;
     ns.response = model;
     auto be = makeBackend(s, ns);
     std::vector<Bounce> out;
@@ -87,6 +88,35 @@ TEST(NativeBall, RestitutionHalfApexesFollowE2n) {
     for (int n = 1; n <= 5; ++n) {
         const double expected = std::pow(e, 2 * n) * h;
         EXPECT_NEAR(bounces[n - 1].apex, expected, 0.01 * expected) << "apex " << n;
+    }
+}
+
+TEST(NativeBall, FixedTicksMeetEachBounceAtTouching) {
+    // Fixed ticks (native.touching=fixed) sample the floor pair at each tick's start; its impact is
+    // deferred to its refined touching time and met there by a look inside the tick, so the apexes
+    // follow e^(2n) h as closely as the event-driven regime's. Met at the tick's start instead
+    // (native.max_tick_looks = 0: no look to defer to), the rebound leaves up to a tick early and
+    // the first apex is off by about 2 % (measured 0.2551 for 0.25 with a 1 mm window).
+    const double e = 0.5, h = 1.0;
+    for (int looks : {64, 0}) {
+        NativeSettings fixed;
+        fixed.touching = TouchingRegime::Fixed;
+        fixed.max_tick_looks = looks;
+        double level = 0;
+        const auto bounces = dropBall(e, h, 3, level, ResponseModel::NewtonCoulomb, 1e-3, fixed);
+        ASSERT_GE(bounces.size(), 3u);
+        double worst = 0.0;   // relative apex error
+        for (int n = 1; n <= 3; ++n) {
+            const double expected = std::pow(e, 2 * n) * h;
+            worst = std::max(worst, std::abs(bounces[n - 1].apex - expected) / expected);
+        }
+        if (looks > 0) {
+            EXPECT_GE(level, -1e-12);
+            EXPECT_LE(level, 1e-9 * (std::sqrt(2 * 20.0 * 20.0 + 0.5 * 0.5) + 0.1) + 1e-12);
+            EXPECT_LT(worst, 1e-6);
+        } else {
+            EXPECT_GT(worst, 1e-3);   // the case above is the deferral's doing
+        }
     }
 }
 

@@ -127,7 +127,15 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
         std::sort(samples.begin(), samples.end(), [](const PairSample& x, const PairSample& y) { return x.pair < y.pair; });
     }
     recordSamples(samples);
-    if (!fixed) deferImpacts(samples, t, frame_end_ - t);   // fixed ticks have no event to defer to
+    if (!fixed) deferImpacts(samples, t, frame_end_ - t);
+    // Fixed ticks: the impact of a body alone against static ones (a sphere, or a body landing without
+    // turning) is met at its refined touching time by a look inside the tick (lookInsideTick), not
+    // at the tick's start, up to a tick early.
+    if (fixed && !inside_tick_ && settings_.max_tick_looks > 0) {
+        deferImpacts(samples, t, frame_end_ - t, true);
+        for (const PairSample& s : samples)
+            if (s.deferred && s.contact_time < frame_end_) step_deferred_.push_back({s.contact_time, s.pair});
+    }
     if (fixed) noteApproach(samples);
 
     // Manifolds of the due islands, warm started from their pairs' caches.

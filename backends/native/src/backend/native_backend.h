@@ -270,8 +270,10 @@ private:
     void warnCollision(const CollisionPhaseReport& report);
     /// Impacts are resolved at touching, not at the window gap: a free sphere meeting a static body
     /// inside the window gets its refined touching time (within `horizon` [s] of `t`) as its pair's
-    /// contact_time, and its manifolds are cleared until then (scheduling/impact_deferral.cpp).
-    void deferImpacts(std::vector<PairSample>& samples, double t, double horizon);
+    /// contact_time, and its manifolds are cleared until then (scheduling/impact_deferral.cpp). With
+    /// `fixed_tick`, any body alone against static ones, approaching faster than gravity adds in the
+    /// tick and turning slowly (a look inside the tick meets it at that time).
+    void deferImpacts(std::vector<PairSample>& samples, double t, double horizon, bool fixed_tick = false);
     void separatePenetrating(const PairSample& s);
 
     // --- bodies (body_motion.cpp) ---
@@ -364,6 +366,7 @@ private:
     // Per-step buffers, emptied and refilled at every internal step: no allocation once warm.
     std::vector<int> step_due_, step_entered_, step_again_, step_look_pair_, step_kicked_;
     std::vector<std::pair<double, int>> step_looks_;
+    std::vector<std::pair<double, int>> step_deferred_;   // fixed ticks: (touching time, pair) of deferred impacts
     std::vector<int> step_look_bodies_, step_look_pairs_;
     std::vector<double> step_point_speed_;   // lookInsideTick: each body's fastest point
     std::vector<std::uint8_t> look_mark_;   // lookIslandSolve: bodies already taken (cleared after)

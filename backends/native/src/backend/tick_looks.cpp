@@ -3,8 +3,9 @@
 // ends than its speculative patch reaches (a ball thrown at a thin wall, a hull an impact set
 // spinning) is looked at again inside the tick, each time it could first have closed to the
 // collision distance (conservative advancement on a closing-speed bound), with the collision phase
-// there, or, where a pair in flight meets, its islands solved from there to the tick's end
-// (docs/native-dynamics.md, "Looks inside a tick").
+// there, or, where a pair in flight meets, its islands solved from there to the tick's end; and a
+// lone body's impact deferred to its touching time (deferImpacts) is looked at then
+// (docs/native-dynamics.md, "Looks inside a tick", "Impacts at touching on fixed ticks").
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -61,6 +62,20 @@ void NativeBackend::lookInsideTick(double t) {
         if (!(most > settings_.speculativeReach() * smallerInnerRadius(ps, true))) continue;
         schedule(p, t);
     }
+    // A free sphere's impact deferred to its touching time (deferImpacts) is looked at then.
+    for (const auto& [at, p] : step_deferred_) {
+        PairState& ps = pairs_[static_cast<std::size_t>(p)];
+        if (ps.looks_step != step_index_) {   // not scheduled in this tick: no look of its own
+            ps.looks_step = step_index_;
+            ps.looks = 0;
+            ps.look_at = kNever;
+        }
+        if (!(at < ps.look_at)) continue;
+        ps.look_at = at;
+        looks.push_back({at, p});
+        std::push_heap(looks.begin(), looks.end(), later);
+    }
+    step_deferred_.clear();
     if (looks.empty()) return;
     ++stats_.fixed_looked_ticks;
     std::vector<int>& one = step_look_pair_;

@@ -15,9 +15,12 @@ namespace vroc::native {
 namespace {
 // The resolved gap relative to the pair's size (issue 4: touching "within 1e-9 of scale").
 constexpr double kTouchingGapPerSize = 1e-9;
+// Fixed ticks: a body other than a sphere is deferred only while its turn moves its points (|ω| x
+// outer radius) slower than this fraction of its approach (deferImpacts).
+constexpr double kLandingSpin = 0.1;
 }  // namespace
 
-void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, double horizon) {
+void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, double horizon, bool fixed_tick) {
     // A body in contact with two pairs does not fly freely: its impacts are resolved as before.
     std::vector<int>& touches = island_scratch_.touches;
     touches.assign(bodies_.size(), 0);
@@ -30,14 +33,45 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
     auto freeBody = [&](int body) {
         return bodies_[static_cast<std::size_t>(body)].infiniteMass() || touches[static_cast<std::size_t>(body)] == 1;
     };
-    // Only a single sphere against a real (static) body for now: after an impact at ~0 gap, a
-    // touching pair's protection bound (scheduleSampled) still lets it close by 1/8 of the
+    auto round = [&](int body) {
+        const BodyShape& sh = shapes_[static_cast<std::size_t>(body)];
+        return sh.parts.size() == 1 && sh.parts[0].is_sphere;
+    };
+    // Event-driven: only a single sphere against a real (static) body for now: after an impact at
+    // ~0 gap, a touching pair's protection bound (scheduleSampled) still lets it close by 1/8 of the
     // collision distance, so a hull whose bounce spins another vertex down would penetrate
     // (NativeRest.DroppedHullComesToRestWithinCollisionDistance). A sphere on a static body has a
     // single contact point that the bounce moves straight away.
-    auto sphereOnStatic = [&](int sphere, int other) {
-        const BodyShape& sh = shapes_[static_cast<std::size_t>(sphere)];
-        return sh.parts.size() == 1 && sh.parts[0].is_sphere && bodies_[static_cast<std::size_t>(other)].is_static;
+    // Fixed ticks have no protection bound: any dynamic body against a static one, alone in the
+    // broad phase with static bodies (no blow inside the tick moves it before its touching time),
+    // approaching faster than gravity adds in the tick (slower, it is settling: the contact
+    // phase's), and, unless a sphere, turning slowly (a tumbling hull brings more of itself down
+    // after its first feature's bounce; the tick's speculative patch meets those at once, while a
+    // flat box lands on its four corners at once, at its touching time).
+    auto alone = [&](int body) {
+        for (int p : body_pairs_[static_cast<std::size_t>(body)]) {
+            const PairState& q = pairs_[static_cast<std::size_t>(p)];
+            if (!bodies_[static_cast<std::size_t>(q.a == body ? q.b : q.a)].is_static) return false;
+        }
+        return true;
+    };
+    auto deferrable = [&](int body, int other, const PairSample& s) {
+        const RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
+        if (rb.infiniteMass() || !bodies_[static_cast<std::size_t>(other)].is_static) return false;
+        if (!fixed_tick) return round(body);
+        if (!alone(body)) return false;
+        const RigidBody& ground = bodies_[static_cast<std::size_t>(other)];
+        const Vec3 w = rb.angularVelocity(), w_ground = ground.angularVelocity();
+        double fastest = 0.0;   // [m/s] the fastest approach of a manifold point
+        for (const ContactManifold& m : s.manifolds) {
+            const bool body_is_a = m.body_a == body;
+            for (const Vec3& p : m.points)
+                fastest = std::max(fastest, body_is_a ? approachAt(rb, w, ground, w_ground, p, m.normal)
+                                                      : approachAt(ground, w_ground, rb, w, p, m.normal));
+        }
+        if (!(fastest > scene_.gravity.norm() * horizon)) return false;
+        return round(body) || rb.maxAngularSpeed() * shapes_[static_cast<std::size_t>(body)].outer_radius <=
+                                  kLandingSpin * fastest;
     };
     for (PairSample& s : samples) {
         PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
@@ -49,12 +83,12 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
         else if (s.manifolds.empty() || !ps.touching) ps.placed_in_window = false;
         if (s.manifolds.empty() || ps.placed_in_window) continue;
         if (!freeBody(ps.a) || !freeBody(ps.b)) continue;
-        if (!sphereOnStatic(ps.a, ps.b) && !sphereOnStatic(ps.b, ps.a)) continue;
         const BodyShape& sa = shapes_[static_cast<std::size_t>(ps.a)];
         const BodyShape& sb = shapes_[static_cast<std::size_t>(ps.b)];
         const double gap_max = kTouchingGapPerSize * (sa.outer_radius + sb.outer_radius);
         if (!(s.distance > gap_max)) continue;
-        // Not touching yet (gap > gap_max): the sphere flies freely inside the window too, rising
+        if (!deferrable(ps.a, ps.b, s) && !deferrable(ps.b, ps.a, s)) continue;
+        // Not touching yet (gap > gap_max): the body flies freely inside the window too, rising
         // or falling, so the contact phase must not catch it there (a bounce lower than the
         // collision distance keeps its e^(2n) height). It is resolved when it touches.
         const RigidBody& a = bodies_[static_cast<std::size_t>(ps.a)];
@@ -67,7 +101,7 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
         stats_.narrow_queries += static_cast<std::int64_t>(r.queries * sa.parts.size() * sb.parts.size());
         if (r.state == RefineState::Failed) continue;
         // Clear: no touching within this step (its horizon may be a rounding sliver of a frame):
-        // the sphere just flies on. Otherwise its pair is due again at the refined time.
+        // the body just flies on. Otherwise its pair is due again at the refined time.
         s.contact_time = r.state == RefineState::Clear ? t + horizon : r.time;
         s.manifolds.clear();
         s.manifold_part.clear();
