@@ -42,7 +42,10 @@ int NativeBackend::fixedTicksFor(double dt) {
         if (!(size < kNever) || !(cap_fraction * size > 0.0)) continue;
         ticks = std::max(ticks, std::ceil(closingSpeed(ps, tick) * dt / (cap_fraction * size)));
     }
-    return static_cast<int>(std::min<double>(ticks, std::max(base, settings_.max_fixed_ticks)));
+    const int count = static_cast<int>(std::min<double>(ticks, std::max(base, settings_.max_fixed_ticks)));
+    // One tick: its boxes are the frame's, swept just now; its tick need not sweep them again.
+    broad_phase_swept_ = count == 1;
+    return count;
 }
 
 void NativeBackend::stepFixed(double dt) {
@@ -69,7 +72,8 @@ void NativeBackend::fixedTick(double t) {
     changed_.clear();   // every pair is sampled at every tick: nothing to chase
     std::vector<int>& entered = step_entered_;
     entered.clear();
-    updateBroadPhase(true, entered);
+    if (!broad_phase_swept_) updateBroadPhase(true, entered);
+    broad_phase_swept_ = false;
     stats_.broad_phase_pairs += static_cast<std::int64_t>(candidates_.size());
     // A pair of two bodies that cannot move (asleep, static or tracked) needs no sample; an
     // awake body's pair with a sleeping one does (its solve wakes the sleeper's island).

@@ -371,6 +371,7 @@ private:
     std::vector<double> step_point_speed_;   // lookInsideTick: each body's fastest point
     std::vector<std::uint8_t> look_mark_;   // lookIslandSolve: bodies already taken (cleared after)
     bool inside_tick_ = false;              // fixed ticks: sampling at a look inside a tick
+    bool broad_phase_swept_ = false;        // fixed ticks: fixedTicksFor swept the boxes over the frame's one tick
     std::vector<std::uint8_t> step_verdict_;   // fixedTick: per candidate pair, skipped, bounded or due
     std::vector<PairSample> step_samples_, step_resampled_, step_extra_;
     SortedIndexSet touching_;               // pairs_ indices of touching pairs (ascending)
