@@ -25,6 +25,16 @@ NativeSettings fixedSettings(TouchingRegime regime, int threads = 1) {
 
 const char* name(TouchingRegime r) { return r == TouchingRegime::Fixed ? "fixed" : "fixed-soft"; }
 
+// A 1 kg body of `shape` alone above a real floor (top at z = 0, collision distance 1 mm), its
+// lowest point `h` above it, restitution e and friction mu against it; `body` is its index.
+Scene dropOntoFloor(const Shape& shape, double lowest, double h, double e, double mu, int& body) {
+    Scene s = bareScene(1e-3);
+    const int mat = addMaterial(s, e, mu);
+    addFloor(s, mat, 5.0);
+    body = addBody(s, "dropped", shape, at(Vec3(0.0, 0.0, lowest + h)), mat, false, 1.0);
+    return s;
+}
+
 // A box thrown high above the floor meets nothing within reach: it flies exactly, as the closed form
 // of a parabola and a constant spin about a principal axis says, at every frame end.
 TEST(NativeFixedTicks, BodyOutOfReachFliesExactly) {
@@ -393,10 +403,8 @@ TEST(NativeFixedTicks, PlateStruckByAHeavyBallIsLookedAtInsideTheTick) {
 TEST(NativeFixedTicks, BounceEventsAtTheirTouchingTimes) {
     const double h = 1.0, r = 0.1, e = 0.5, g = 9.81;
     for (int ticks : {1, 4}) {
-        Scene s = bareScene(1e-3);
-        const int mat = addMaterial(s, e, 0.3);
-        addFloor(s, mat, 5.0);
-        addBody(s, "ball", Shape::sphere(r), at(Vec3(0.0, 0.0, r + h)), mat, false, 1.0);
+        int ball = -1;
+        const Scene s = dropOntoFloor(Shape::sphere(r), r, h, e, 0.3, ball);
         NativeSettings ns = fixedSettings(TouchingRegime::Fixed);
         ns.max_fixed_ticks = ticks;
         auto be = makeBackend(s, ns);
@@ -421,10 +429,8 @@ TEST(NativeFixedTicks, BounceEventsAtTheirTouchingTimes) {
 TEST(NativeFixedTicks, FlatBoxDroppedAloneBouncesToE2hFromTouching) {
     const double h = 1.0, half = 0.1, e = 0.5, g = 9.81;
     for (int looks : {64, 0}) {
-        Scene s = bareScene(1e-3);
-        const int mat = addMaterial(s, e, 0.5);
-        addFloor(s, mat, 5.0);
-        const int box = addBody(s, "box", Shape::box(Vec3(half, half, half)), at(Vec3(0.0, 0.0, half + h)), mat, false, 1.0);
+        int box = -1;
+        const Scene s = dropOntoFloor(Shape::box(Vec3(half, half, half)), half, h, e, 0.5, box);
         NativeSettings ns = fixedSettings(TouchingRegime::Fixed);
         ns.max_tick_looks = looks;
         auto be = makeBackend(s, ns);
