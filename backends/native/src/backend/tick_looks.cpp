@@ -62,7 +62,7 @@ void NativeBackend::lookInsideTick(double t) {
         if (!(most > settings_.speculativeReach() * smallerInnerRadius(ps, true))) continue;
         schedule(p, t);
     }
-    // A free sphere's impact deferred to its touching time (deferImpacts) is looked at then.
+    // A lone body's impact deferred to its touching time (deferImpacts) is looked at then.
     for (const auto& [at, p] : step_deferred_) {
         PairState& ps = pairs_[static_cast<std::size_t>(p)];
         if (ps.looks_step != step_index_) {   // not scheduled in this tick: no look of its own
