@@ -22,8 +22,9 @@ constexpr std::size_t kPairShare = 256;
 
 }  // namespace
 
-int NativeBackend::fixedTicksFor(double dt) {
+int NativeBackend::fixedTicksFor(double dt, bool& swept) {
     const int base = std::max(1, settings_.contact_substeps);
+    swept = false;
     if (settings_.max_fixed_ticks <= base) return base;
     // Boxes swept over the whole frame: every pair that could meet within it.
     frame_end_ = time_ + dt;
@@ -31,6 +32,7 @@ int NativeBackend::fixedTicksFor(double dt) {
     std::vector<int>& entered = step_entered_;
     entered.clear();
     updateBroadPhase(true, entered);
+    swept = true;
     // A tick may close a pair by at most the speculative reach's cap (what its patch can hold): a
     // fast body (a ball thrown into a pile) splits the frame into more ticks, up to the limit.
     const double cap_fraction = settings_.speculativeReach();
@@ -42,14 +44,12 @@ int NativeBackend::fixedTicksFor(double dt) {
         if (!(size < kNever) || !(cap_fraction * size > 0.0)) continue;
         ticks = std::max(ticks, std::ceil(closingSpeed(ps, tick) * dt / (cap_fraction * size)));
     }
-    const int count = static_cast<int>(std::min<double>(ticks, std::max(base, settings_.max_fixed_ticks)));
-    // One tick: its boxes are the frame's, swept just now; its tick need not sweep them again.
-    broad_phase_swept_ = count == 1;
-    return count;
+    return static_cast<int>(std::min<double>(ticks, std::max(base, settings_.max_fixed_ticks)));
 }
 
 void NativeBackend::stepFixed(double dt) {
-    const int ticks = fixedTicksFor(dt);
+    bool swept = false;
+    const int ticks = fixedTicksFor(dt, swept);
     const double start = time_;
     for (int k = 0; k < ticks; ++k) {
         const double t = start + dt * static_cast<double>(k) / static_cast<double>(ticks);
@@ -57,7 +57,8 @@ void NativeBackend::stepFixed(double dt) {
         // The tick is the "frame" the broad phase sweeps boxes over and the islands are solved to.
         frame_end_ = end;
         frame_dt_ = end - t;
-        fixedTick(t);
+        // One tick: its boxes are the frame's, swept just now by fixedTicksFor.
+        fixedTick(t, swept && ticks == 1);
         time_ = end;
     }
     frame_end_ = start + dt;   // == time_: the last tick ends there
@@ -67,13 +68,12 @@ void NativeBackend::stepFixed(double dt) {
     stats_.max_internal_steps_per_frame = std::max<std::int64_t>(stats_.max_internal_steps_per_frame, ticks);
 }
 
-void NativeBackend::fixedTick(double t) {
+void NativeBackend::fixedTick(double t, bool boxes_swept) {
     ++step_index_;
     changed_.clear();   // every pair is sampled at every tick: nothing to chase
     std::vector<int>& entered = step_entered_;
     entered.clear();
-    if (!broad_phase_swept_) updateBroadPhase(true, entered);
-    broad_phase_swept_ = false;
+    if (!boxes_swept) updateBroadPhase(true, entered);
     stats_.broad_phase_pairs += static_cast<std::int64_t>(candidates_.size());
     // A pair of two bodies that cannot move (asleep, static or tracked) needs no sample; an
     // awake body's pair with a sleeping one does (its solve wakes the sleeper's island).

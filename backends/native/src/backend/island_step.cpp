@@ -669,18 +669,22 @@ void NativeBackend::emitEvents(const std::vector<PairSample>& samples, double t)
     }
 }
 
+double NativeBackend::fastestApproach(const PairSample& s) const {
+    double fastest = 0.0;
+    for (const ContactManifold& m : s.manifolds) {
+        const RigidBody& a = bodies_[static_cast<std::size_t>(m.body_a)];
+        const RigidBody& b = bodies_[static_cast<std::size_t>(m.body_b)];
+        const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
+        for (const Vec3& p : m.points) fastest = std::max(fastest, approachAt(a, wa, b, wb, p, m.normal));
+    }
+    return fastest;
+}
+
 void NativeBackend::noteApproach(std::vector<PairSample>& samples) const {
     // Only a pair that may report an impact (not in contact) or has one reported reads it.
     for (PairSample& s : samples) {
-        s.approach = 0.0;
         const PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
-        if (ps.in_contact && !ps.impact_reported) continue;
-        for (const ContactManifold& m : s.manifolds) {
-            const RigidBody& a = bodies_[static_cast<std::size_t>(m.body_a)];
-            const RigidBody& b = bodies_[static_cast<std::size_t>(m.body_b)];
-            const Vec3 wa = a.angularVelocity(), wb = b.angularVelocity();
-            for (const Vec3& p : m.points) s.approach = std::max(s.approach, approachAt(a, wa, b, wb, p, m.normal));
-        }
+        s.approach = ps.in_contact && !ps.impact_reported ? 0.0 : fastestApproach(s);
     }
 }
 

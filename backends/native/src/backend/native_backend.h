@@ -126,9 +126,11 @@ private:
     void passOverBounded(int pair);
     /// Fixed ticks for the frame of `dt` [s] from time_: native.contact_substeps, or more (up to
     /// native.max_fixed_ticks) where a pair may close farther within a tick than its patch reaches.
-    int fixedTicksFor(double dt);
-    /// One fixed tick from t to frame_end_ (set to the tick's end).
-    void fixedTick(double t);
+    /// `swept`: it swept the broad phase's boxes over the whole frame (set when it looked at the pairs).
+    int fixedTicksFor(double dt, bool& swept);
+    /// One fixed tick from t to frame_end_ (set to the tick's end); `boxes_swept`: the broad phase's
+    /// boxes are already swept over it (a frame of one tick, by fixedTicksFor).
+    void fixedTick(double t, bool boxes_swept);
     /// Fixed ticks: the collision phase at time t of the manifolds in `samples` (pairs a body an
     /// impact set moving now reaches); the bodies it changes fly freely from t and are recorded as
     /// kicked (island_scratch_.kicked). Inside the tick (a look), a pair touching since its last
@@ -264,6 +266,8 @@ private:
     /// Fixed ticks: each sample's fastest approach over its manifolds' points, at the bodies'
     /// velocities now (before the collision phase: emitEvents' touching time); 0 for a pair in
     /// contact with no impact reported, which reads none.
+    /// [m/s] the fastest approach of any manifold point of `s` at its bodies' velocities now (0 if none approaches).
+    double fastestApproach(const PairSample& s) const;
     void noteApproach(std::vector<PairSample>& samples) const;
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Counts a collision phase's troubles as warnings.
@@ -371,7 +375,6 @@ private:
     std::vector<double> step_point_speed_;   // lookInsideTick: each body's fastest point
     std::vector<std::uint8_t> look_mark_;   // lookIslandSolve: bodies already taken (cleared after)
     bool inside_tick_ = false;              // fixed ticks: sampling at a look inside a tick
-    bool broad_phase_swept_ = false;        // fixed ticks: fixedTicksFor swept the boxes over the frame's one tick
     std::vector<std::uint8_t> step_verdict_;   // fixedTick: per candidate pair, skipped, bounded or due
     std::vector<PairSample> step_samples_, step_resampled_, step_extra_;
     SortedIndexSet touching_;               // pairs_ indices of touching pairs (ascending)

@@ -29,22 +29,29 @@ void NativeBackend::lookInsideTick(double t) {
     std::vector<Look>& looks = step_looks_;
     looks.clear();
     const auto later = std::greater<Look>();
+    // A pair's looks are counted, and its look time kept, per tick.
+    auto thisTick = [&](PairState& ps) {
+        if (ps.looks_step == step_index_) return;
+        ps.looks_step = step_index_;
+        ps.looks = 0;
+        ps.look_at = kNever;
+    };
+    auto lookAt = [&](PairState& ps, int p, double at) {
+        ps.look_at = at;
+        looks.push_back({at, p});
+        std::push_heap(looks.begin(), looks.end(), later);
+    };
     auto schedule = [&](int p, double from) {
         PairState& ps = pairs_[static_cast<std::size_t>(p)];
         ps.look_at = kNever;
         const double next = nextLook(ps, from);
         if (!(next < frame_end_)) return;
-        if (ps.looks_step != step_index_) {
-            ps.looks_step = step_index_;
-            ps.looks = 0;
-        }
+        thisTick(ps);
         if (ps.looks >= settings_.max_tick_looks) {
             ++stats_.fixed_looks_cut;
             return;
         }
-        ps.look_at = next;
-        looks.push_back({next, p});
-        std::push_heap(looks.begin(), looks.end(), later);
+        lookAt(ps, p, next);
     };
     // At t every candidate's distance (or the bound on it) is known from the tick's sampling. A pair
     // whose points cannot outrun its reach however they move (each body's fastest point: its COM
@@ -65,15 +72,8 @@ void NativeBackend::lookInsideTick(double t) {
     // A lone body's impact deferred to its touching time (deferImpacts) is looked at then.
     for (const auto& [at, p] : step_deferred_) {
         PairState& ps = pairs_[static_cast<std::size_t>(p)];
-        if (ps.looks_step != step_index_) {   // not scheduled in this tick: no look of its own
-            ps.looks_step = step_index_;
-            ps.looks = 0;
-            ps.look_at = kNever;
-        }
-        if (!(at < ps.look_at)) continue;
-        ps.look_at = at;
-        looks.push_back({at, p});
-        std::push_heap(looks.begin(), looks.end(), later);
+        thisTick(ps);
+        if (at < ps.look_at) lookAt(ps, p, at);
     }
     step_deferred_.clear();
     if (looks.empty()) return;

@@ -60,15 +60,7 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
         if (rb.infiniteMass() || !bodies_[static_cast<std::size_t>(other)].is_static) return false;
         if (!fixed_tick) return round(body);
         if (!alone(body)) return false;
-        const RigidBody& ground = bodies_[static_cast<std::size_t>(other)];
-        const Vec3 w = rb.angularVelocity(), w_ground = ground.angularVelocity();
-        double fastest = 0.0;   // [m/s] the fastest approach of a manifold point
-        for (const ContactManifold& m : s.manifolds) {
-            const bool body_is_a = m.body_a == body;
-            for (const Vec3& p : m.points)
-                fastest = std::max(fastest, body_is_a ? approachAt(rb, w, ground, w_ground, p, m.normal)
-                                                      : approachAt(ground, w_ground, rb, w, p, m.normal));
-        }
+        const double fastest = fastestApproach(s);
         if (!(fastest > scene_.gravity.norm() * horizon)) return false;
         return round(body) || rb.maxAngularSpeed() * shapes_[static_cast<std::size_t>(body)].outer_radius <=
                                   kLandingSpin * fastest;
