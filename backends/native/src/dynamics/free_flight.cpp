@@ -54,6 +54,26 @@ Quat energyCorrection(const Vec3& c, const Mat3& inv_inertia_body, double target
 
 }  // namespace
 
+double torqueFreeSpeedBound(const Vec3& moments, double l_squared, double twice_energy) {
+    if (!(moments(0) > 0.0) || !(twice_energy > 0.0)) return -1.0;
+    // Rounding in the invariants may leave an end's zero coordinate a little negative: accepted
+    // within 1e-12 of the largest any x_i can be (2E / I_min: their rounding is ~1e-16 of that), and
+    // covered by the margin.
+    const double slack = 1e-12 * twice_energy / moments(0);
+    double most = -1.0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j) {
+            const double ii = moments(i), ij = moments(j);
+            // Equal moments act as one axis: another pair (or isotropy) covers them.
+            if (!(ij - ii > 1e-12 * ij)) continue;
+            const double xi = (l_squared - twice_energy * ij) / (ii * (ii - ij));
+            const double xj = (l_squared - twice_energy * ii) / (ij * (ij - ii));
+            if (!(xi >= -slack) || !(xj >= -slack)) continue;
+            most = std::max(most, std::max(0.0, xi) + std::max(0.0, xj));
+        }
+    return most < 0.0 ? -1.0 : std::sqrt(most + 2.0 * slack);
+}
+
 void advanceBallistic(RigidBody& body, double h, const Vec3& gravity) {
     if (body.is_static) return;
     if (body.is_kinematic) {   // prescribed motion: no gravity

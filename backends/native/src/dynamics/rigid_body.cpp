@@ -2,6 +2,9 @@
 #include "dynamics/rigid_body.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+
+#include "dynamics/free_flight.h"
 
 namespace vroc::native {
 
@@ -52,7 +55,11 @@ void RigidBody::refreshEnergy() {
 double RigidBody::maxAngularSpeed() const {
     if (is_kinematic) return kinematic_angular_velocity.norm();
     if (is_static || smallest_moment <= 0.0) return 0.0;
-    return angular_momentum.norm() / smallest_moment;
+    const double loose = angular_momentum.norm() / smallest_moment;
+    if (isotropic) return loose;   // ω is constant: |L| / I is its speed
+    const double tight = torqueFreeSpeedBound(principal_moments, angular_momentum.squaredNorm(),
+                                              angular_momentum.dot(angularVelocity()));
+    return tight >= 0.0 ? std::min(tight, loose) : loose;
 }
 
 RigidBody RigidBody::fromScene(const Body& body) {
@@ -73,6 +80,7 @@ RigidBody RigidBody::fromScene(const Body& body) {
         rb.inv_inertia_body = rb.inertia_body.inverse();
         Eigen::SelfAdjointEigenSolver<Mat3> eig(rb.inertia_body, Eigen::EigenvaluesOnly);
         rb.smallest_moment = eig.eigenvalues()(0);
+        rb.principal_moments = eig.eigenvalues();
         rb.isotropic = eig.eigenvalues()(2) - eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(2);
         rb.velocity = body.linear_velocity;
         const Mat3 r = rb.rotation();

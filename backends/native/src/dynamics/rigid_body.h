@@ -59,9 +59,11 @@ struct RigidBody {
     void applyImpulse(const Vec3& impulse, const Vec3& p);
     /// Re-derives the rotational energy reference after L or the orientation was set from outside.
     void refreshEnergy();
-    /// [rad/s] bound on |omega| over torque-free flight: |L| / smallest principal moment.
+    /// [rad/s] bound on |omega| over torque-free flight: the largest |ω| its energy and |L| allow
+    /// (torqueFreeSpeedBound), never more than |L| / smallest principal moment.
     double maxAngularSpeed() const;
     double smallest_moment = 0.0;       ///< [kg m^2] smallest principal moment (cached at creation)
+    Vec3 principal_moments = Vec3::Zero();   ///< [kg m^2] ascending (cached at creation)
     /// All principal moments equal (to 1e-12 relative: spheres, cubes): ω = I⁻¹ L is constant in
     /// torque-free flight, so the rotation has a closed form (cached at creation).
     bool isotropic = false;
