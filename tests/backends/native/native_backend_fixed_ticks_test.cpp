@@ -456,5 +456,37 @@ TEST(NativeFixedTicks, FlatBoxDroppedAloneBouncesToE2hFromTouching) {
     }
 }
 
+
+// A compound of a box and a ball side by side (the conformance landing check's), dropped flat: its
+// centre of mass lies between the parts, so no ball about it fits inside the body, and the reach of
+// its speculative points is scaled by its thinnest part instead. It lands at the closed-form time
+// sqrt(2 h / g), nowhere deeper than the collision distance, and rests. With the reach scaled by
+// the COM-centred inner radius (zero) it had no speculative points: it passed 24 mm into the floor
+// in one frame and rocked there (41 penetrations repaired, still at 0.3 m/s after 1.5 s).
+TEST(NativeFixedTicks, CompoundDroppedFlatLandsAtTouchingAndRests) {
+    const double h = 0.1, g = 9.81, cd = 1e-3;
+    for (TouchingRegime regime : {TouchingRegime::Fixed, TouchingRegime::FixedSoft}) {
+        const Shape shape = Shape::compound({{Shape::box(Vec3(0.1, 0.1, 0.05)), at(Vec3(-0.15, 0, 0))},
+                                             {Shape::sphere(0.05), at(Vec3(0.15, 0, 0))}});
+        int body = -1;
+        const Scene s = dropOntoFloor(shape, 0.05, h, 0.0, 0.5, body);
+        auto be = makeBackend(s, fixedSettings(regime));
+        double first = -1.0, lowest = std::numeric_limits<double>::infinity();
+        for (int f = 0; f < 90; ++f) {
+            be->stepFrame(s.frame_dt);
+            for (const CollisionEvent& ev : be->takeEvents())
+                if (first < 0.0) first = ev.time;
+            lowest = std::min(lowest, be->bodyState(body).pose.position.z() - 0.05);
+        }
+        const BodyState st = be->bodyState(body);
+        EXPECT_NEAR(first, std::sqrt(2.0 * h / g), 1e-6) << name(regime);
+        EXPECT_GE(lowest, -cd) << name(regime) << ": sank into the floor";
+        EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u) << name(regime);
+        EXPECT_LE(be->statistics().at("native.deepest_penetration_m"), cd) << name(regime);
+        EXPECT_LT(st.linear_velocity.norm() + st.angular_velocity.norm(), 1e-3) << name(regime) << ": still moving";
+        EXPECT_NEAR(st.pose.position.z() - 0.05, 0.0, cd) << name(regime);
+    }
+}
+
 }  // namespace
 }  // namespace vroc::native::test

@@ -74,6 +74,20 @@ BodyShape BodyShape::fromScene(const Shape& shape, const Vec3& com) {
         }
     }
     s.inner_radius = std::min(s.inner_radius, s.outer_radius);
+    s.reach_radius = s.inner_radius;
+    if (s.parts.size() > 1) {
+        s.reach_radius = std::numeric_limits<double>::infinity();
+        for (const ConvexPart& p : s.parts) {
+            double r = p.radius;   // a sphere's own
+            if (!p.is_sphere) {
+                const Vec3 c = p.local.applyInverse(p.bound_center);   // the vertices' mean, part frame
+                r = std::numeric_limits<double>::infinity();
+                for (int f = 0; f < p.mesh->faceCount(); ++f) r = std::min(r, -p.mesh->faceDistance(f, c));
+            }
+            s.reach_radius = std::min(s.reach_radius, std::max(0.0, r));
+        }
+        s.reach_radius = std::min(s.reach_radius, s.outer_radius);
+    }
     return s;
 }
 

@@ -36,6 +36,10 @@ struct BodyShape {
     std::vector<ConvexPart> parts;
     double outer_radius = 0.0;   ///< [m] R: farthest surface point from the COM
     double inner_radius = 0.0;   ///< [m] r: largest COM-centred ball inside (0 if unknown)
+    /// [m] How thick the body is where a contact patch holds it: inner_radius for one part; for a
+    /// compound (its COM may lie outside every part: inner_radius 0), its thinnest part's largest
+    /// ball about the part's own centre. It scales the speculative reach on the grid.
+    double reach_radius = 0.0;
 
     /// Builds the parts; `com` [m] is the COM in the body frame.
     static BodyShape fromScene(const Shape& shape, const Vec3& com);

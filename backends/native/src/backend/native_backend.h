@@ -182,8 +182,8 @@ private:
     /// collision distance, plus in the speculative and soft regimes what the pair may close within
     /// the longest tick (capped).
     double patchReach(const PairState& ps) const;
-    /// [m] the smaller inner radius of the pair's bodies that move (`awake_only`: and are awake);
-    /// kNever if none does.
+    /// [m] the smaller inner radius (BodyShape::reach_radius: a compound's thinnest part's) of the
+    /// pair's bodies that move (`awake_only`: and are awake); kNever if none does.
     double smallerInnerRadius(const PairState& ps, bool awake_only = false) const;
     /// [m/s] bound on how fast any feature of the pair closes now: relative COM speed, each body's
     /// rotation at its outer radius, gravity over `tick` [s] against a body of infinite mass.

@@ -256,7 +256,7 @@ double NativeBackend::smallerInnerRadius(const PairState& ps, bool awake_only) c
     double size = kNever;
     for (int body : {ps.a, ps.b}) {
         const auto b = static_cast<std::size_t>(body);
-        if (!infinite_mass_[b] && !(awake_only && asleep_[b] != 0)) size = std::min(size, shapes_[b].inner_radius);
+        if (!infinite_mass_[b] && !(awake_only && asleep_[b] != 0)) size = std::min(size, shapes_[b].reach_radius);
     }
     return size;
 }
