@@ -55,15 +55,21 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
         }
         return true;
     };
-    auto deferrable = [&](int body, int other, const PairSample& s) {
+    auto deferrable = [&](int body, int other) {
         const RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
         if (rb.infiniteMass() || !bodies_[static_cast<std::size_t>(other)].is_static) return false;
-        if (!fixed_tick) return round(body);
-        if (!alone(body)) return false;
-        const double fastest = fastestApproach(s);
-        if (!(fastest > scene_.gravity.norm() * horizon)) return false;
-        return round(body) || rb.maxAngularSpeed() * shapes_[static_cast<std::size_t>(body)].outer_radius <=
-                                  kLandingSpin * fastest;
+        return fixed_tick ? alone(body) : round(body);
+    };
+    // Fixed ticks, once the touching time is known: the approach there (at the tick's start, plus
+    // what gravity adds until then; a low bounce's ball leaves the tick's start slower than gravity
+    // adds in a tick and touches faster) against gravity's in a tick, and the turn against it.
+    const double g = scene_.gravity.norm();
+    auto landing = [&](int body, const PairSample& s, double touch) {
+        const double approach = fastestApproach(s) + g * (touch - t);
+        if (!(approach > g * horizon)) return false;
+        return round(body) || bodies_[static_cast<std::size_t>(body)].maxAngularSpeed() *
+                                      shapes_[static_cast<std::size_t>(body)].outer_radius <=
+                                  kLandingSpin * approach;
     };
     for (PairSample& s : samples) {
         PairState& ps = pairs_[static_cast<std::size_t>(s.pair)];
@@ -79,7 +85,8 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
         const BodyShape& sb = shapes_[static_cast<std::size_t>(ps.b)];
         const double gap_max = kTouchingGapPerSize * (sa.outer_radius + sb.outer_radius);
         if (!(s.distance > gap_max)) continue;
-        if (!deferrable(ps.a, ps.b, s) && !deferrable(ps.b, ps.a, s)) continue;
+        const int mover = deferrable(ps.a, ps.b) ? ps.a : deferrable(ps.b, ps.a) ? ps.b : -1;
+        if (mover < 0) continue;
         // Not touching yet (gap > gap_max): the body flies freely inside the window too, rising
         // or falling, so the contact phase must not catch it there (a bounce lower than the
         // collision distance keeps its e^(2n) height). It is resolved when it touches.
@@ -94,7 +101,9 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
         if (r.state == RefineState::Failed) continue;
         // Clear: no touching within this step (its horizon may be a rounding sliver of a frame):
         // the body just flies on. Otherwise its pair is due again at the refined time.
-        s.contact_time = r.state == RefineState::Clear ? t + horizon : r.time;
+        const double touch = r.state == RefineState::Clear ? t + horizon : r.time;
+        if (fixed_tick && !landing(mover, s, touch)) continue;
+        s.contact_time = touch;
         s.manifolds.clear();
         s.manifold_part.clear();
         s.deferred = true;
