@@ -51,14 +51,15 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
     auto alone = [&](int body) {
         for (int p : body_pairs_[static_cast<std::size_t>(body)]) {
             const PairState& q = pairs_[static_cast<std::size_t>(p)];
-            if (!bodies_[static_cast<std::size_t>(q.a == body ? q.b : q.a)].is_static) return false;
+            if (!bodies_[static_cast<std::size_t>(q.a == body ? q.b : q.a)].infiniteMass()) return false;
         }
         return true;
     };
     auto deferrable = [&](int body, int other) {
         const RigidBody& rb = bodies_[static_cast<std::size_t>(body)];
-        if (rb.infiniteMass() || !bodies_[static_cast<std::size_t>(other)].is_static) return false;
-        return fixed_tick ? alone(body) : round(body);
+        const RigidBody& ground = bodies_[static_cast<std::size_t>(other)];
+        if (rb.infiniteMass()) return false;
+        return fixed_tick ? ground.infiniteMass() && alone(body) : ground.is_static && round(body);
     };
     // Fixed ticks, once the touching time is known: the approach there (at the tick's start, plus
     // what gravity adds until then; a low bounce's ball leaves the tick's start slower than gravity
