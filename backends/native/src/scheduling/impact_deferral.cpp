@@ -42,10 +42,10 @@ void NativeBackend::deferImpacts(std::vector<PairSample>& samples, double t, dou
     // collision distance, so a hull whose bounce spins another vertex down would penetrate
     // (NativeRest.DroppedHullComesToRestWithinCollisionDistance). A sphere on a static body has a
     // single contact point that the bounce moves straight away.
-    // Fixed ticks have no protection bound: any dynamic body against a static one, alone in the
-    // broad phase with static bodies (no blow inside the tick moves it before its touching time),
-    // approaching faster than gravity adds in the tick (slower, it is settling: the contact
-    // phase's), and, unless a sphere, turning slowly (a tumbling hull brings more of itself down
+    // Fixed ticks have no protection bound: any dynamic body against a static or tracked one, alone
+    // in the broad phase with such bodies (no blow inside the tick moves it before its touching
+    // time), approaching at its touching time faster than gravity adds in the tick (slower, it is
+    // settling: the contact phase's), and, unless a sphere, turning slowly (a tumbling hull brings more of itself down
     // after its first feature's bounce; the tick's speculative patch meets those at once, while a
     // flat box lands on its four corners at once, at its touching time).
     auto alone = [&](int body) {
