@@ -95,9 +95,9 @@ MotionBound NativeBackend::motionBound(int body, double& valid_until) const {
     valid_until = drift_until_[i];
     m.acceleration = drift_acceleration_[i];
     // |L| grows by at most |torque| t over the drift: |omega| is bounded by its largest value.
-    if (rb.smallest_moment > 0.0)
+    if (rb.smallestMoment() > 0.0)
         m.angular_speed = (rb.angular_momentum.norm() + drift_torque_[i].norm() * (drift_until_[i] - valid_at_[i])) /
-                          rb.smallest_moment;
+                          rb.smallestMoment();
     return m;
 }
 
@@ -113,7 +113,7 @@ std::optional<RigidMotion> NativeBackend::rigidMotion(int body, double t, double
     m.acceleration = drifting ? drift_acceleration_[i] : (rb.is_kinematic ? Vec3::Zero() : scene_.gravity);
     m.angular_velocity = rb.angularVelocity();
     m.curvature = rotationCurvatureBound(rb.angular_momentum.norm(), drifting ? drift_torque_[i].norm() : 0.0,
-                                         rb.smallest_moment, duration, rb.isotropic);
+                                         rb.smallestMoment(), duration, rb.isotropic);
     return m;
 }
 

@@ -49,6 +49,15 @@ void addPart(const Shape& shape, const Pose& local, std::vector<ConvexPart>& par
     parts.push_back(std::move(p));
 }
 
+// [m] The largest ball about `center` (scene body frame) inside the part; 0 if the centre is outside.
+double ballInside(const ConvexPart& p, const Vec3& center) {
+    const Vec3 c = p.local.applyInverse(center);   // in the part frame
+    if (p.is_sphere) return std::max(0.0, p.radius - c.norm());
+    double r = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < p.mesh->faceCount(); ++f) r = std::min(r, -p.mesh->faceDistance(f, c));
+    return std::max(0.0, r);
+}
+
 }  // namespace
 
 BodyShape BodyShape::fromScene(const Shape& shape, const Vec3& com) {
@@ -62,30 +71,12 @@ BodyShape BodyShape::fromScene(const Shape& shape, const Vec3& com) {
                 s.outer_radius = std::max(s.outer_radius, (p.local.apply(p.mesh->position(v)) - com).norm());
         }
     }
-    if (s.parts.size() == 1) {
-        const ConvexPart& p = s.parts.front();
-        const Vec3 c = p.local.applyInverse(com);   // COM in the part frame
-        if (p.is_sphere) {
-            s.inner_radius = std::max(0.0, p.radius - c.norm());
-        } else {
-            double r = std::numeric_limits<double>::infinity();
-            for (int f = 0; f < p.mesh->faceCount(); ++f) r = std::min(r, -p.mesh->faceDistance(f, c));
-            s.inner_radius = std::max(0.0, r);
-        }
-    }
+    if (s.parts.size() == 1) s.inner_radius = ballInside(s.parts.front(), com);
     s.inner_radius = std::min(s.inner_radius, s.outer_radius);
     s.reach_radius = s.inner_radius;
-    if (s.parts.size() > 1) {
+    if (s.parts.size() > 1) {   // each part about its own centre (a ball holding it: a sphere's own)
         s.reach_radius = std::numeric_limits<double>::infinity();
-        for (const ConvexPart& p : s.parts) {
-            double r = p.radius;   // a sphere's own
-            if (!p.is_sphere) {
-                const Vec3 c = p.local.applyInverse(p.bound_center);   // the vertices' mean, part frame
-                r = std::numeric_limits<double>::infinity();
-                for (int f = 0; f < p.mesh->faceCount(); ++f) r = std::min(r, -p.mesh->faceDistance(f, c));
-            }
-            s.reach_radius = std::min(s.reach_radius, std::max(0.0, r));
-        }
+        for (const ConvexPart& p : s.parts) s.reach_radius = std::min(s.reach_radius, ballInside(p, p.bound_center));
         s.reach_radius = std::min(s.reach_radius, s.outer_radius);
     }
     return s;

@@ -128,9 +128,9 @@ void NativeBackend::solveIslands(std::vector<PairSample>& samples, double t) {
     }
     recordSamples(samples);
     if (!fixed) deferImpacts(samples, t, frame_end_ - t);
-    // Fixed ticks: the impact of a body alone against static ones (a sphere, or a body landing without
-    // turning) is met at its refined touching time by a look inside the tick (lookInsideTick), not
-    // at the tick's start, up to a tick early.
+    // Fixed ticks: the impact of a body alone against static or tracked ones (a sphere, or a body
+    // landing without turning) is met at its refined touching time by a look inside the tick
+    // (lookInsideTick), not at the tick's start, up to a tick early.
     if (fixed && !inside_tick_ && settings_.max_tick_looks > 0) {
         deferImpacts(samples, t, frame_end_ - t, true);
         for (const PairSample& s : samples)

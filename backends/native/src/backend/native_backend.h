@@ -263,11 +263,12 @@ private:
     /// true if an impulse was applied; marks the movable ones in `impulsed`, troubles in `tally`.
     bool manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
                         double tick, std::vector<std::uint8_t>& impulsed, CollisionTally& tally) const;
+    /// [m/s] the fastest approach of any manifold point of `s` at its bodies' velocities now (0 if
+    /// none approaches).
+    double fastestApproach(const PairSample& s) const;
     /// Fixed ticks: each sample's fastest approach over its manifolds' points, at the bodies'
     /// velocities now (before the collision phase: emitEvents' touching time); 0 for a pair in
     /// contact with no impact reported, which reads none.
-    /// [m/s] the fastest approach of any manifold point of `s` at its bodies' velocities now (0 if none approaches).
-    double fastestApproach(const PairSample& s) const;
     void noteApproach(std::vector<PairSample>& samples) const;
     void emitEvents(const std::vector<PairSample>& samples, double t);
     /// Counts a collision phase's troubles as warnings.
@@ -275,8 +276,8 @@ private:
     /// Impacts are resolved at touching, not at the window gap: a free sphere meeting a static body
     /// inside the window gets its refined touching time (within `horizon` [s] of `t`) as its pair's
     /// contact_time, and its manifolds are cleared until then (scheduling/impact_deferral.cpp). With
-    /// `fixed_tick`, any body alone against static ones, approaching faster than gravity adds in the
-    /// tick and turning slowly (a look inside the tick meets it at that time).
+    /// `fixed_tick`, any body alone against static or tracked ones, approaching at touching faster
+    /// than gravity adds in the tick and turning slowly (a look inside the tick meets it then).
     void deferImpacts(std::vector<PairSample>& samples, double t, double horizon, bool fixed_tick = false);
     void separatePenetrating(const PairSample& s);
 

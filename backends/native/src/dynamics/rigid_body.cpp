@@ -29,6 +29,7 @@ Vec3 RigidBody::computeAngularVelocity() const {
 void RigidBody::refreshAngularVelocity() {
     if (infiniteMass()) return;
     omega_ = computeAngularVelocity();
+    speed_bound_ = smallestMoment() > 0.0 ? speedBound(omega_) : 0.0;
     omega_orientation_ = orientation.coeffs();
     omega_momentum_ = angular_momentum;
 }
@@ -52,13 +53,11 @@ void RigidBody::refreshEnergy() {
     rotational_energy = infiniteMass() ? 0.0 : 0.5 * angular_momentum.dot(angularVelocity());
 }
 
-double RigidBody::maxAngularSpeed() const {
-    if (is_kinematic) return kinematic_angular_velocity.norm();
-    if (is_static || smallest_moment <= 0.0) return 0.0;
-    const double loose = angular_momentum.norm() / smallest_moment;
+double RigidBody::speedBound(const Vec3& omega) const {
+    const double loose = angular_momentum.norm() / smallestMoment();
     if (isotropic) return loose;   // ω is constant: |L| / I is its speed
-    const double tight = torqueFreeSpeedBound(principal_moments, angular_momentum.squaredNorm(),
-                                              angular_momentum.dot(angularVelocity()));
+    const double tight =
+        torqueFreeSpeedBound(principal_moments, angular_momentum.squaredNorm(), angular_momentum.dot(omega));
     return tight >= 0.0 ? std::min(tight, loose) : loose;
 }
 
@@ -79,7 +78,6 @@ RigidBody RigidBody::fromScene(const Body& body) {
         rb.inertia_body = 0.5 * (body.mass_properties.inertia + body.mass_properties.inertia.transpose());
         rb.inv_inertia_body = rb.inertia_body.inverse();
         Eigen::SelfAdjointEigenSolver<Mat3> eig(rb.inertia_body, Eigen::EigenvaluesOnly);
-        rb.smallest_moment = eig.eigenvalues()(0);
         rb.principal_moments = eig.eigenvalues();
         rb.isotropic = eig.eigenvalues()(2) - eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(2);
         rb.velocity = body.linear_velocity;

@@ -43,10 +43,7 @@ struct RigidBody {
     Vec3 angularVelocity() const {
         if (is_static) return Vec3::Zero();
         if (is_kinematic) return kinematic_angular_velocity;
-        if (std::memcmp(omega_orientation_.data(), orientation.coeffs().data(), sizeof(double) * 4) == 0 &&
-            std::memcmp(omega_momentum_.data(), angular_momentum.data(), sizeof(double) * 3) == 0)
-            return omega_;
-        return computeAngularVelocity();
+        return omegaStored() ? omega_ : computeAngularVelocity();
     }
     /// Stores ω for the current orientation and L (after either changes: refreshEnergy does it).
     void refreshAngularVelocity();
@@ -60,10 +57,17 @@ struct RigidBody {
     /// Re-derives the rotational energy reference after L or the orientation was set from outside.
     void refreshEnergy();
     /// [rad/s] bound on |omega| over torque-free flight: the largest |ω| its energy and |L| allow
-    /// (torqueFreeSpeedBound), never more than |L| / smallest principal moment.
-    double maxAngularSpeed() const;
-    double smallest_moment = 0.0;       ///< [kg m^2] smallest principal moment (cached at creation)
+    /// (torqueFreeSpeedBound), never more than |L| / smallest principal moment. Stored with ω (the
+    /// same bits as computed afresh, under the same key).
+    double maxAngularSpeed() const {
+        if (is_kinematic) return kinematic_angular_velocity.norm();
+        if (is_static || !(smallestMoment() > 0.0)) return 0.0;
+        if (omegaStored()) return speed_bound_;
+        return speedBound(computeAngularVelocity());
+    }
     Vec3 principal_moments = Vec3::Zero();   ///< [kg m^2] ascending (cached at creation)
+    /// [kg m^2] the smallest principal moment.
+    double smallestMoment() const { return principal_moments(0); }
     /// All principal moments equal (to 1e-12 relative: spheres, cubes): ω = I⁻¹ L is constant in
     /// torque-free flight, so the rotation has a closed form (cached at creation).
     bool isotropic = false;
@@ -73,8 +77,17 @@ struct RigidBody {
 
 private:
     Vec3 computeAngularVelocity() const;
-    // ω as last stored, and the orientation coefficients and L it was taken from (NaN: none yet).
+    /// maxAngularSpeed's bound for the body turning at `omega` now.
+    double speedBound(const Vec3& omega) const;
+    /// The orientation and L are bit for bit those ω was stored from.
+    bool omegaStored() const {
+        return std::memcmp(omega_orientation_.data(), orientation.coeffs().data(), sizeof(double) * 4) == 0 &&
+               std::memcmp(omega_momentum_.data(), angular_momentum.data(), sizeof(double) * 3) == 0;
+    }
+    // ω and its speed bound as last stored, and the orientation coefficients and L they were taken
+    // from (NaN: none yet).
     Vec3 omega_ = Vec3::Zero();
+    double speed_bound_ = 0.0;
     Eigen::Vector4d omega_orientation_ = Eigen::Vector4d::Constant(std::numeric_limits<double>::quiet_NaN());
     Vec3 omega_momentum_ = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
 };
