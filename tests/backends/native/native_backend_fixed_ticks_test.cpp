@@ -159,10 +159,13 @@ TEST(NativeFixedTicks, TumblingBoxesLandAndRest) {
 // A pair apart is not queried, at a tick or in the impact passes after a blow, while its distance
 // bound (its last distance, less how far its bodies' points moved since) stays beyond its reach (at
 // its bodies' velocities then; native.pair_bounds). The query it skips would have
-// found it out of reach: the results are those of querying every pair at every tick (the second
-// run, the independent answer), bit for bit, with fewer queries. A row of resting boxes 1 cm apart,
-// a box dropped among them and a ball rolled into them: pairs apart that stay apart, and pairs apart
-// that close and touch.
+// found it out of reach: the motion is that of querying every pair at every tick (the second run,
+// the independent answer), frame by frame, to rounding, with fewer queries. Not bit for bit: a
+// skipped query leaves the pair's walk to start from older features at its next query, and where
+// several features are equally close (a box resting flat) the manifold's last bits depend on which
+// the walk stops at (on a 100-box bin or the dominoes the final state hashes differ, as they did
+// before this test said so). A row of resting boxes 1 cm apart, a box dropped among them and a ball
+// rolled into them: pairs apart that stay apart, and pairs apart that close and touch.
 TEST(NativeFixedTicks, PairBoundsSkipQueriesNotResults) {
     const double cd = 1e-3, half = 0.1;
     Scene s = bareScene(cd);
@@ -174,19 +177,26 @@ TEST(NativeFixedTicks, PairBoundsSkipQueriesNotResults) {
     addBody(s, "dropped", Shape::box(Vec3(half, half, half)), at(Vec3(0.21 * 2 + 0.105, 0, 1.0)), mat, false, 1.0);
     const int ball = addBody(s, "ball", Shape::sphere(0.08), at(Vec3(-1.0, 0, 0.08 + 0.5 * cd)), mat, false, 2.0);
     s.bodies[static_cast<std::size_t>(ball)].linear_velocity = Vec3(2.0, 0, 0);
-    std::vector<std::uint64_t> hashes;
-    std::vector<double> queries, bounded;
+    std::vector<std::vector<Vec3>> path(2);   // every body's position at every frame, per run
+    std::vector<double> queries, bounded, events;
     for (bool bounds : {true, false}) {
         NativeSettings ns = fixedSettings(TouchingRegime::Fixed);
         ns.pair_bounds = bounds;
         auto be = makeBackend(s, ns);
-        for (int f = 0; f < 120; ++f) be->stepFrame(s.frame_dt);
-        hashes.push_back(stateHash(*be));
+        for (int f = 0; f < 120; ++f) {
+            be->stepFrame(s.frame_dt);
+            for (std::size_t b = 0; b < s.bodies.size(); ++b)
+                path[bounds ? 0 : 1].push_back(be->bodyState(static_cast<int>(b)).pose.position);
+        }
         queries.push_back(be->statistics().at("native.narrow_queries"));
         bounded.push_back(be->statistics().at("native.bounded_pairs"));
+        events.push_back(be->statistics().at("collision_events"));
         EXPECT_GT(be->statistics().at("collision_events"), 0.0) << "the ball and the dropped box meet the row";
     }
-    EXPECT_EQ(hashes[0], hashes[1]);
+    double apart = 0.0;
+    for (std::size_t k = 0; k < path[0].size(); ++k) apart = std::max(apart, (path[0][k] - path[1][k]).norm());
+    EXPECT_LE(apart, 1e-12);
+    EXPECT_EQ(events[0], events[1]);
     EXPECT_GT(bounded[0], 0.0);
     EXPECT_EQ(bounded[1], 0.0);
     EXPECT_LT(queries[0], queries[1]);

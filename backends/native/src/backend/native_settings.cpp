@@ -83,7 +83,7 @@ std::vector<SettingSpec> NativeSettings::specs() {
     s.push_back({"native.pair_bounds", T::Boolean, "true", 0, 0, {},
                  "fixed ticks: a pair apart is not queried while a lower bound on its distance (its last "
                  "one, minus how far its bodies' points have moved since) stays beyond its reach; false: every "
-                 "broad-phase pair queried at every tick (the same results; for checking and measurement)"});
+                 "broad-phase pair queried at every tick (the same motion to rounding: a skipped query changes which of equally close features the next walk stops at; for checking and measurement)"});
     s.push_back({"native.speculative_reach",
                  T::Real,
                  "-1",

@@ -82,7 +82,7 @@ struct NativeSettings {
     int max_fixed_ticks = 4;
     /// Fixed ticks: a pair apart is not queried while a lower bound on its distance (its last one,
     /// minus how far its bodies' points have moved since) stays beyond its reach (false: every pair
-    /// queried at every tick; the same results, for checking and measurement)
+    /// queried at every tick; the same motion to rounding, for checking and measurement)
     bool pair_bounds = true;
     /// Fixed ticks: the most looks inside one tick at a pair that may close farther within it than
     /// its patch reaches (conservative advancement to the collision distance); 0: none
