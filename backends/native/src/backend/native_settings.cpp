@@ -17,11 +17,11 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "[m/s] normal approach speed below which a collision is plastic (e = 0)"});
     s.push_back({"native.collision_iterations", T::Integer, "5", 1, 1000, {},
                  "collision-phase sweeps over the touching pairs"});
-    s.push_back({"native.collision_blow_iterations", T::Integer, "-1", -1, 1000, {},
+    s.push_back({"native.collision_blow_iterations", T::Integer, "40", 0, 1000, {},
                  "collision-phase sweeps while a blow travels: after native.collision_iterations, sweeps go "
                  "on up to this many while a sweep's fastest impulse met an approach faster than gravity adds "
-                 "in a tick (a ball's blow running along a row of touching boxes). -1: 40 in the event-driven "
-                 "regimes, none on fixed ticks (docs/native-dynamics.md, \"A blow along a row\")"});
+                 "in a tick (a ball's blow running along a row of touching boxes; a pile landing at once) "
+                 "(docs/native-dynamics.md, \"A blow along a row\")"});
     s.push_back({"native.contact_iterations", T::Integer, "10", 1, 10000, {},
                  "contact-phase Gauss-Seidel sweeps over the contact points"});
     s.push_back({"native.shock_iterations", T::Integer, "8", 0, 1000, {},

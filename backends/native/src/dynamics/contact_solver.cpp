@@ -1212,6 +1212,7 @@ ContactSolverReport solveContactPhase(const std::vector<RigidBody>& bodies,
             const double loose = -c.start_speed - 2.0 * allowed / h;
             c.target = c.start_speed >= 0.0 ? loose : std::min(0.0, loose);
         }
+        if (settings.end_targets) c.target = std::max(c.target, allowed > 0.0 && h > 0.0 ? -allowed / h : 0.0);
         return c;
     };
     // Each manifold's patch and its points' rows, in manifold order: its place in cs is known first.

@@ -54,6 +54,13 @@ struct ContactSolverSettings {
     /// to `speculative_target` [m] within the step: they push only when they would be reached then.
     double speculative_from = std::numeric_limits<double>::infinity();
     double speculative_target = 0.0;
+    /// Fixed ticks: every target also holds for a body that moves at its end velocity over the
+    /// whole step (one whose contact the tick turns into an impact at its start, fixedTick): a
+    /// touching point ends not approaching, and a speculative one closes by at most its allowance
+    /// at its end speed. Otherwise a separating point may slow down to minus its start speed, and a
+    /// speculative one close by twice its allowance at its end speed, which only the mean of the
+    /// start and end velocities (a drift) keeps within the allowance.
+    bool end_targets = false;
     /// Optional workers for the sweeps of one large island: team(fn) calls fn(worker) for every
     /// worker in [0, team_size) at once and returns when all have returned. Empty: the calling
     /// thread alone. The sweeps visit patches in groups that share no moving body, in an order that
