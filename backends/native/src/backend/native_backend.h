@@ -142,14 +142,21 @@ private:
     /// bounds skip pairs at the tick's start only.
     void impactPasses(double t, std::vector<int>* moved = nullptr);
     /// Fixed ticks: after the tick's solve at t, each pair that may close by more than its patch
-    /// reaches before the tick ends is looked at again inside it (nextLook), with the collision phase
-    /// and its impact passes there, or its islands solved there where a pair in flight meets, up to
+    /// reaches before the tick ends (nextLook), or whose manifold is predicted to close by more than
+    /// the solve let it (closingLook), is looked at again inside it, with the collision phase and its
+    /// impact passes there, or its islands solved there where a pair in flight meets, up to
     /// native.max_tick_looks times a pair (tick_looks.cpp).
     void lookInsideTick(double t);
     /// Fixed ticks: when the pair, at its last distance (sampled at `from`, or bounded at the tick's
     /// start), could first have closed to the collision distance or by its reach; kNever if it
     /// cannot close by more than its reach before the tick ends.
     double nextLook(const PairState& ps, double from) const;
+    /// Fixed ticks: the first time after `from` [s] within the tick at which a point of the pair's
+    /// manifold (its last sample's, taken this tick), predicted to second order (each body at its
+    /// acceleration, gravity in flight or its drift's when held, and the turn of the face holding
+    /// the point), closes by native.tick_look_depth x the collision distance below its gap or from a
+    /// gap to touching; kNever if none does.
+    double closingLook(const PairState& ps, double from) const;
     /// Fixed ticks: a manifold of the sample has a point touching, or reaching the speculative target
     /// before the tick ends, that approaches faster than gravity adds in a tick.
     bool impacting(const PairSample& s, double t) const;

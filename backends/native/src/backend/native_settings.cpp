@@ -80,6 +80,18 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "its speculative reach (a ball thrown at a thin wall, a hull an impact set spinning): each "
                  "when the pair could first have closed to the collision distance or by its reach, with the "
                  "collision phase there; 0: none (docs/native-dynamics.md, \"Looks inside a tick\")"});
+    s.push_back({"native.tick_look_depth",
+                 T::Real,
+                 "0.5",
+                 0,
+                 100,
+                 {},
+                 "[fraction of the collision distance] fixed ticks: a pair with a manifold whose points are "
+                 "predicted to close within the tick by more than this below their gap (or from a gap to "
+                 "touching) is looked at when they would: second order at each body's acceleration (gravity "
+                 "in flight, its drift's when held) and the turn of the face that holds a point (a box tumbling "
+                 "over an edge, a heavy box spinning on a ball). 0: none (docs/native-dynamics.md, \"Looks "
+                 "at a predicted closing\")"});
     s.push_back({"native.pair_bounds", T::Boolean, "true", 0, 0, {},
                  "fixed ticks: a pair apart is not queried while a lower bound on its distance (its last "
                  "one, minus how far its bodies' points have moved since) stays beyond its reach; false: every "
@@ -194,6 +206,7 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.manifold_reuse")) n.manifold_reuse = settings.real("native.manifold_reuse");
     if (has("native.pair_bounds")) n.pair_bounds = settings.boolean("native.pair_bounds");
     if (has("native.max_tick_looks")) n.max_tick_looks = static_cast<int>(settings.integer("native.max_tick_looks"));
+    if (has("native.tick_look_depth")) n.tick_look_depth = settings.real("native.tick_look_depth");
     if (has("native.max_fixed_ticks")) n.max_fixed_ticks = static_cast<int>(settings.integer("native.max_fixed_ticks"));
     if (has("native.speculative_reach")) n.speculative_reach = settings.real("native.speculative_reach");
     if (has("native.touching"))

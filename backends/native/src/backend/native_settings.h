@@ -86,6 +86,11 @@ struct NativeSettings {
     /// Fixed ticks: the most looks inside one tick at a pair that may close farther within it than
     /// its patch reaches (conservative advancement to the collision distance); 0: none
     int max_tick_looks = 64;
+    /// [-] fraction of the collision distance. Fixed ticks: a pair with a manifold whose points are
+    /// predicted (to second order: each body's acceleration, and the turn of the face that holds a
+    /// point) to close within the tick by more than this below their gap, or from a gap to touching,
+    /// is looked at when they would; 0: no such looks
+    double tick_look_depth = 0.5;
     int soft_substeps = 4;                  ///< soft regime: sub-steps per island tick
     double soft_hertz = 60.0;               ///< [Hz] soft regime: stiffness of the push-out
     int soft_iterations = 4;                ///< soft regime: relaxations with the push-out per sub-step
