@@ -434,7 +434,9 @@ int endTargetViolations(bool end_targets, std::uint64_t seed) {
             const double allowed = gap < cd ? 0.0 : gap - 0.5 * cd;   // how far the point may close
             const double slack = 1e-9 + 1e-7 * h;
             // A point approaching at the start is the collision phase's (it meets it first).
-            if (start >= 0.0) EXPECT_GE(h * 0.5 * (start + finish), -allowed - slack) << "seed " << seed << " trial " << trial << " point " << i;
+            if (start >= 0.0) {
+                EXPECT_GE(h * 0.5 * (start + finish), -allowed - slack) << "seed " << seed << " trial " << trial << " point " << i;
+            }
             if (start >= 0.0 && h * finish < -allowed - slack) ++violations;
         }
     }
