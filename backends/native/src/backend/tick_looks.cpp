@@ -16,6 +16,7 @@
 
 #include "backend/native_backend.h"
 #include "scheduling/collision_time_bound.h"
+#include "scheduling/vertex_approach_bound.h"
 
 namespace vroc::native {
 namespace {
@@ -33,18 +34,6 @@ double faceGapAcceleration(const RigidBody& owner, const Vec3& w_o, const Vec3& 
     const Vec3 q_ddot = w_q.cross(w_q.cross(rq));
     const Vec3 m_dot = w_o.cross(m);
     return w_o.cross(m_dot).dot(q - owner.com) + 2.0 * m_dot.dot(q_dot - owner.velocity) + m.dot(q_ddot);
-}
-
-// The earliest tau in (0, horizon] at which g0 + g1 tau + g2 tau^2 / 2 falls to `level` (< g0), or
-// infinity: the smaller positive root, in the form without cancellation.
-double firstFall(double g0, double g1, double g2, double level, double horizon) {
-    const double drop = g0 - level;
-    const double disc = g1 * g1 - 2.0 * g2 * drop;
-    if (!(disc >= 0.0)) return kNever;
-    const double denominator = std::sqrt(disc) - g1;
-    if (!(denominator > 0.0)) return kNever;
-    const double tau = 2.0 * drop / denominator;
-    return tau <= horizon ? tau : kNever;
 }
 
 bool singleSphere(const BodyShape& shape) { return shape.parts.size() == 1 && shape.parts[0].is_sphere; }
@@ -87,8 +76,10 @@ double NativeBackend::closingLook(const PairState& ps, double from) const {
             if (!sphere_a) turn = std::min(turn, faceGapAcceleration(a, wav, n, b, wbv, sphere_b ? b.com : p));
             if (!(turn < kNever)) turn = 0.0;
             const double gap = i < m.point_gap.size() ? m.point_gap[i] : m.distance;
-            const double level = std::min(gap - depth, 0.0);
-            first = std::min(first, firstFall(gap, -approachAt(a, wav, b, wbv, p, n), turn + pull, level, rest));
+            // It falls to min(gap - depth, 0): by `depth` below its gap, or from a gap to touching.
+            const double drop = gap - std::min(gap - depth, 0.0);
+            const double tau = firstReach(drop, approachAt(a, wav, b, wbv, p, n), -(turn + pull));
+            if (tau <= rest) first = std::min(first, tau);
         }
     }
     return first < kNever ? from + first : kNever;
@@ -121,10 +112,11 @@ void NativeBackend::lookInsideTick(double t) {
         looks.push_back({at, p});
         std::push_heap(looks.begin(), looks.end(), later);
     };
-    auto schedule = [&](int p, double from) {
+    // `closing`: the pair's closingLook from `from`, if the caller worked it out already.
+    auto schedule = [&](int p, double from, double closing = -1.0) {
         PairState& ps = pairs_[static_cast<std::size_t>(p)];
         ps.look_at = kNever;
-        const double next = std::min(nextLook(ps, from), closingLook(ps, from));
+        const double next = std::min(nextLook(ps, from), closing >= 0.0 ? closing : closingLook(ps, from));
         if (!(next < frame_end_)) return;
         thisTick(ps);
         if (ps.looks >= settings_.max_tick_looks) {
@@ -148,8 +140,9 @@ void NativeBackend::lookInsideTick(double t) {
         const auto a = static_cast<std::size_t>(ps.a), b = static_cast<std::size_t>(ps.b);
         const double most = (fastest[a] + fastest[b] + (infinite_mass_[a] != infinite_mass_[b] ? fall : 0.0)) * h;
         const bool far = most > settings_.speculativeReach() * smallerInnerRadius(ps, true);
-        if (!far && !(closingLook(ps, t) < frame_end_)) continue;
-        schedule(p, t);
+        const double closing = closingLook(ps, t);
+        if (!far && !(closing < frame_end_)) continue;
+        schedule(p, t, closing);
     }
     // A lone body's impact deferred to its touching time (deferImpacts) is looked at then.
     for (const auto& [at, p] : step_deferred_) {

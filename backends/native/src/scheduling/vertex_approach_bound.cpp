@@ -32,7 +32,12 @@ std::vector<Height> heights(const SupportPoints& s, const RigidMotion& m, const 
 // [m] the most a height can rise over [0, h] (its bound's positive parts).
 double maxRise(const Height& x, double h) { return std::max(0.0, x.speed) * h + 0.5 * std::max(0.0, x.accel) * h * h; }
 
-// First t ≥ 0 with speed t + ½ accel t² ≥ slack (slack > 0), or kNever. The stable root form.
+// Rounding in the coefficients is far below this; the floors the callers use sit well above the
+// depth at which penetration becomes an emergency.
+constexpr double kPullBack = 1.0 - 1e-9;
+
+}  // namespace
+
 double firstReach(double slack, double speed, double accel) {
     if (accel == 0.0) return speed > 0.0 ? slack / speed : kNever;
     const double disc = speed * speed + 2.0 * accel * slack;
@@ -41,12 +46,6 @@ double firstReach(double slack, double speed, double accel) {
     if (!(denom > 0.0)) return kNever;
     return 2.0 * slack / denom;
 }
-
-// Rounding in the coefficients is far below this; the floors the callers use sit well above the
-// depth at which penetration becomes an emergency.
-constexpr double kPullBack = 1.0 - 1e-9;
-
-}  // namespace
 
 double rotationCurvatureBound(double angular_momentum, double torque, double smallest_moment, double duration,
                               bool isotropic) {

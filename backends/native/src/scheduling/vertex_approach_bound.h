@@ -40,6 +40,11 @@ struct RigidMotion {
     }
 };
 
+/// [s] The first t >= 0 with speed t + ½ accel t² >= slack (slack > 0), or kNever: the smaller
+/// positive root, in the stable form (a height rising towards a level; the per-point bound here, and
+/// the fixed ticks' looks at a predicted closing).
+double firstReach(double slack, double speed, double accel);
+
 /// [1/s^2] K for a body with world angular momentum |L| [kg m^2/s], constant world torque |τ| [N m]
 /// and smallest principal moment I_min [kg m^2], over an interval of `duration` [s]:
 /// |L| ≤ L_max = |L| + |τ| T, |ω| ≤ Ω = L_max / I_min, and Euler's equation in world axes,
