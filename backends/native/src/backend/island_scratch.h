@@ -18,7 +18,11 @@ namespace vroc::native {
 /// of its bodies an impulse changed.
 struct CollisionPhaseReport {
     std::uint64_t ill_conditioned = 0, degenerate = 0, nonfinite = 0;
-    std::vector<std::uint8_t> impulsed;  ///< per body of the island
+    std::vector<std::uint32_t> impulsed;  ///< per body of the island: the impulses that changed it
+    /// Per manifold: its two bodies' `impulsed` counts when it last applied none (a later sweep
+    /// that finds them unchanged would apply none again: it is passed over), or kUnsettled.
+    std::vector<std::uint64_t> settled;
+    static constexpr std::uint64_t kUnsettled = ~std::uint64_t{0};
 };
 
 /// One worker's count of a collision phase's troubles (summed into CollisionPhaseReport), on a
@@ -55,6 +59,7 @@ struct IslandSolve {
         resting.clear();
         collision.ill_conditioned = collision.degenerate = collision.nonfinite = 0;
         collision.impulsed.clear();
+        collision.settled.clear();
         report = ContactSolverReport{};
     }
 };

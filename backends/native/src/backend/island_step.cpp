@@ -25,7 +25,7 @@ constexpr double kQuietApproach = 1e-6;
 // Applies a one-point impulse `r` at p to a and b (the bodies of m), counting its troubles in
 // `tally` and marking the movable ones in `impulsed`; true if it changed them.
 bool applyPointImpulse(const ImpulseResult& r, const Vec3& p, RigidBody& a, RigidBody& b, ContactManifold& m,
-                       std::vector<std::uint8_t>& impulsed, CollisionTally& tally) {
+                       std::vector<std::uint32_t>& impulsed, CollisionTally& tally) {
     if (r.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
     if (r.trouble == ImpulseTrouble::Degenerate) ++tally.degenerate;
     if (!r.impulse.allFinite()) {
@@ -35,8 +35,8 @@ bool applyPointImpulse(const ImpulseResult& r, const Vec3& p, RigidBody& a, Rigi
     if (r.impulse.isZero(0.0)) return false;
     a.applyImpulse(-r.impulse, p);
     b.applyImpulse(r.impulse, p);
-    if (!a.infiniteMass()) impulsed[static_cast<std::size_t>(m.body_a)] = 1;
-    if (!b.infiniteMass()) impulsed[static_cast<std::size_t>(m.body_b)] = 1;
+    if (!a.infiniteMass()) ++impulsed[static_cast<std::size_t>(m.body_a)];
+    if (!b.infiniteMass()) ++impulsed[static_cast<std::size_t>(m.body_b)];
     m.collision_impulse += std::max(0.0, r.impulse.dot(m.normal));
     return true;
 }
@@ -491,8 +491,9 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
                                    CollisionPhaseReport& report, int workers, ImpulseWaves& waves) const {
     report.ill_conditioned = report.degenerate = report.nonfinite = 0;
     report.impulsed.assign(bodies.size(), 0);
+    report.settled.assign(manifolds.size(), CollisionPhaseReport::kUnsettled);
     // One manifold's impulse, its troubles counted in `tally`; true if it applied one.
-    auto collide = [&](std::size_t k, CollisionTally& tally) {
+    auto collideOne = [&](std::size_t k, CollisionTally& tally) {
         ContactManifold& m = manifolds[k];
         RigidBody& a = bodies[static_cast<std::size_t>(m.body_a)];
         RigidBody& b = bodies[static_cast<std::size_t>(m.body_b)];
@@ -515,6 +516,19 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
         if (!applyPointImpulse(r, m.centroid, a, b, m, report.impulsed, tally)) return false;
         tally.fastest = std::max(tally.fastest, -un);
         return true;
+    };
+    // What a manifold does depends on its two bodies and itself alone, so a manifold that applied nothing is passed over
+    // until an impulse elsewhere changes one of its bodies: the same bits, fewer visits (a pile's
+    // later sweeps change a few bodies). A wave's manifolds share no movable body, so a team's
+    // workers read only counts their own manifold or an earlier wave wrote.
+    auto collide = [&](std::size_t k, CollisionTally& tally) {
+        ContactManifold& m = manifolds[k];
+        const auto ia = static_cast<std::size_t>(m.body_a), ib = static_cast<std::size_t>(m.body_b);
+        const std::uint64_t counts = (std::uint64_t{report.impulsed[ia]} << 32) | report.impulsed[ib];
+        if (report.settled[k] == counts) return false;
+        const bool applied = collideOne(k, tally);
+        report.settled[k] = applied ? CollisionPhaseReport::kUnsettled : counts;
+        return applied;
     };
     auto addTally = [&report](const CollisionTally& t) {
         report.ill_conditioned += t.ill_conditioned;
@@ -584,7 +598,7 @@ bool NativeBackend::meetsNow(const ContactManifold& m, std::size_t i, double app
 }
 
 bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
-                                   double tick, std::vector<std::uint8_t>& impulsed, CollisionTally& tally) const {
+                                   double tick, std::vector<std::uint32_t>& impulsed, CollisionTally& tally) const {
     // The points that touch now, and the speculative ones that reach the speculative target within
     // the tick at their approach speed: their impact is met now, up to a/|u| early (a the gap to
     // close), rather than leaving the contact phase to stop them (the drift moves a body with the
@@ -638,7 +652,7 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
     tally.fastest = std::max(tally.fastest, fastest);
     applyPatchImpulse(a, b, points, m.normal, imp);
     for (RigidBody* body : {&a, &b})
-        if (!body->infiniteMass()) impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)] = 1;
+        if (!body->infiniteMass()) ++impulsed[static_cast<std::size_t>(body == &a ? m.body_a : m.body_b)];
     for (double x : imp.normal) m.collision_impulse += x;
     return true;
 }

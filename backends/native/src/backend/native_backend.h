@@ -267,9 +267,10 @@ private:
     /// The collision phase of one manifold (Newton-Coulomb): its touching points and the speculative
     /// ones reached within `tick` [s]; one point gets the coupled impulse of newton_coulomb.h, two or
     /// more Newton restitution per point with patch friction (patch_impulse.h). Applied to a and b;
-    /// true if an impulse was applied; marks the movable ones in `impulsed`, troubles in `tally`.
+    /// true if an impulse was applied; counts it on the movable ones in `impulsed`, troubles in
+    /// `tally`. Nothing changes when it returns false: it depends on a, b and m alone.
     bool manifoldCollision(RigidBody& a, RigidBody& b, ContactManifold& m, bool resting, double resting_speed,
-                        double tick, std::vector<std::uint8_t>& impulsed, CollisionTally& tally) const;
+                        double tick, std::vector<std::uint32_t>& impulsed, CollisionTally& tally) const;
     /// [m/s] the fastest approach of any manifold point of `s` at its bodies' velocities now (0 if
     /// none approaches).
     double fastestApproach(const PairSample& s) const;
