@@ -23,7 +23,7 @@ constexpr double kMatchFraction = 0.05;
 constexpr double kQuietApproach = 1e-6;
 
 // Applies a one-point impulse `r` at p to a and b (the bodies of m), counting its troubles in
-// `tally` and marking the movable ones in `impulsed`; true if it changed them.
+// `tally` and the impulse on the movable ones in `impulsed`; true if it changed them.
 bool applyPointImpulse(const ImpulseResult& r, const Vec3& p, RigidBody& a, RigidBody& b, ContactManifold& m,
                        std::vector<std::uint32_t>& impulsed, CollisionTally& tally) {
     if (r.trouble == ImpulseTrouble::IllConditioned) ++tally.ill_conditioned;
@@ -517,10 +517,10 @@ void NativeBackend::collisionPhase(std::vector<RigidBody>& bodies, std::vector<C
         tally.fastest = std::max(tally.fastest, -un);
         return true;
     };
-    // What a manifold does depends on its two bodies and itself alone, so a manifold that applied nothing is passed over
-    // until an impulse elsewhere changes one of its bodies: the same bits, fewer visits (a pile's
-    // later sweeps change a few bodies). A wave's manifolds share no movable body, so a team's
-    // workers read only counts their own manifold or an earlier wave wrote.
+    // What a manifold does depends on its two bodies and itself alone, so one that applied nothing
+    // is passed over until an impulse elsewhere changes one of its bodies: the same bits, fewer
+    // visits (a pile's later sweeps change a few bodies). A wave's manifolds share no movable body,
+    // so a team's workers read only counts their own manifold or an earlier wave wrote.
     auto collide = [&](std::size_t k, CollisionTally& tally) {
         ContactManifold& m = manifolds[k];
         const auto ia = static_cast<std::size_t>(m.body_a), ib = static_cast<std::size_t>(m.body_b);
