@@ -155,8 +155,13 @@ private:
     /// manifold (its last sample's, taken this tick), predicted to second order (each body at its
     /// acceleration, gravity in flight or its drift's when held, and the turn of the face holding
     /// the point), closes by native.tick_look_depth x the collision distance below its gap or from a
-    /// gap to touching; kNever if none does.
+    /// gap to touching; if none does, (native.tick_look_features) the first time, by bisection on
+    /// predictedGap, that the pair's distance falls so (a feature no patch holds); kNever if neither.
     double closingLook(const PairState& ps, double from) const;
+    /// Fixed ticks: the pair's distance [m] at `at`, its bodies moved on from now (time `from`) at
+    /// their velocities and accelerations (closingLook's), each part pair queried from a copy of its
+    /// feature cache (the pair's own is left as it is).
+    double predictedGap(const PairState& ps, double from, double at) const;
     /// Fixed ticks: a manifold of the sample has a point touching, or reaching the speculative target
     /// before the tick ends, that approaches faster than gravity adds in a tick.
     bool impacting(const PairSample& s, double t) const;

@@ -92,6 +92,12 @@ std::vector<SettingSpec> NativeSettings::specs() {
                  "in flight, its drift's when held) and the turn of the face that holds a point (a box tumbling "
                  "over an edge, a heavy box spinning on a ball). 0: none (docs/native-dynamics.md, \"Looks "
                  "at a predicted closing\")"});
+    s.push_back({"native.tick_look_features", T::Boolean, "true", 0, 0, {},
+                 "fixed ticks: a touching pair that may close by native.tick_look_depth within the tick, none "
+                 "of whose manifold points is predicted to, has its distance predicted at the tick's end (a "
+                 "query at its bodies' predicted poses) and is looked at when it first sinks so (bisection): a "
+                 "feature no patch holds, such as a tumbling box whose edge contact turns into another face's; "
+                 "false: manifold points only (docs/native-dynamics.md, \"Looks at a feature no patch holds\")"});
     s.push_back({"native.pair_bounds", T::Boolean, "true", 0, 0, {},
                  "fixed ticks: a pair apart is not queried while a lower bound on its distance (its last "
                  "one, minus how far its bodies' points have moved since) stays beyond its reach; false: every "
@@ -207,6 +213,7 @@ NativeSettings NativeSettings::from(const Settings& settings) {
     if (has("native.pair_bounds")) n.pair_bounds = settings.boolean("native.pair_bounds");
     if (has("native.max_tick_looks")) n.max_tick_looks = static_cast<int>(settings.integer("native.max_tick_looks"));
     if (has("native.tick_look_depth")) n.tick_look_depth = settings.real("native.tick_look_depth");
+    if (has("native.tick_look_features")) n.tick_look_features = settings.boolean("native.tick_look_features");
     if (has("native.max_fixed_ticks")) n.max_fixed_ticks = static_cast<int>(settings.integer("native.max_fixed_ticks"));
     if (has("native.speculative_reach")) n.speculative_reach = settings.real("native.speculative_reach");
     if (has("native.touching"))

@@ -91,6 +91,11 @@ struct NativeSettings {
     /// point) to close within the tick by more than this below their gap, or from a gap to touching,
     /// is looked at when they would; 0: no such looks
     double tick_look_depth = 0.5;
+    /// Fixed ticks: a touching pair that may close by tick_look_depth within the tick, none of whose
+    /// manifold points is predicted to, has its distance predicted at the tick's end (a query at the
+    /// bodies' predicted poses) and is looked at when it first sinks so: a feature no patch holds (a
+    /// tumbling box whose edge contact turns into another face's); false: manifold points only
+    bool tick_look_features = true;
     int soft_substeps = 4;                  ///< soft regime: sub-steps per island tick
     double soft_hertz = 60.0;               ///< [Hz] soft regime: stiffness of the push-out
     int soft_iterations = 4;                ///< soft regime: relaxations with the push-out per sub-step
