@@ -9,6 +9,13 @@ namespace vroc::native {
 
 namespace {
 
+// An update moves only the changed bodies' end points while fewer than 1 / this of the bodies
+// changed; more, and the whole axes are rewritten and swept (as cheap, and no worse for many).
+constexpr std::size_t kFewMovedFraction = 8;
+// At most this many pairs added and removed by an update are put in place one by one; more are
+// merged into the set in one pass.
+constexpr std::size_t kFewChanges = 16;
+
 BodyPair ordered(int x, int y) { return x < y ? BodyPair{x, y} : BodyPair{y, x}; }
 
 void sortUnique(std::vector<BodyPair>& v) {
@@ -23,12 +30,14 @@ int SweepAndPrune::addBody(const Aabb& box, bool infinite_mass) {
     boxes_.push_back(box);
     infinite_mass_.push_back(infinite_mass ? 1 : 0);
     removed_.push_back(0);
+    moved_flag_.push_back(0);
     setAabb(body, box);
     // Appended after every other end point, lower before upper: as if the box came from +inf.
     for (auto& axis : axes_) {
         axis.push_back({std::numeric_limits<double>::infinity(), body, 0});
         axis.push_back({std::numeric_limits<double>::infinity(), body, 1});
     }
+    indexSlots();
     ++pending_new_;
     return body;
 }
@@ -41,6 +50,7 @@ void SweepAndPrune::removeBody(int body) {
                                   [body](const EndPoint& e) { return e.body == body; }),
                    axis.end());
     }
+    indexSlots();
     const auto before_size = pairs_.size();
     for (const BodyPair& p : pairs_)
         if (p.a == body || p.b == body) removed_with_bodies_.push_back(p);
@@ -67,7 +77,13 @@ void SweepAndPrune::setAabb(int body, const Aabb& box) {
     }
     if (bad) ++stats_.invalid_boxes;
     Aabb& kept = boxes_[body];
-    if (kept.lower != clean.lower || kept.upper != clean.upper) boxes_changed_ = true;
+    if (kept.lower != clean.lower || kept.upper != clean.upper) {
+        boxes_changed_ = true;
+        if (moved_flag_[body] == 0) {
+            moved_flag_[body] = 1;
+            moved_.push_back(body);
+        }
+    }
     kept = clean;
 }
 
@@ -107,10 +123,75 @@ void SweepAndPrune::sortAxis(int axis) {
             if (!key.is_upper && passed.is_upper) onBegin(key.body, passed.body);
             if (key.is_upper && !passed.is_upper) onEnd(key.body, passed.body);
             e[j] = e[j - 1];
+            slot(axis, e[j]) = static_cast<std::int32_t>(j);
             ++stats_.swaps;
         }
         e[j] = key;
+        slot(axis, key) = static_cast<std::int32_t>(j);
     }
+}
+
+void SweepAndPrune::indexSlots() {
+    for (int axis = 0; axis < 3; ++axis) {
+        slots_[axis].assign(2 * boxes_.size(), -1);
+        for (std::size_t i = 0; i < axes_[axis].size(); ++i) slot(axis, axes_[axis][i]) = static_cast<std::int32_t>(i);
+    }
+}
+
+void SweepAndPrune::moveEndPoint(int axis, std::size_t i) {
+    std::vector<EndPoint>& e = axes_[axis];
+    const EndPoint key = e[i];
+    // Down past every end point it now sorts before (as the insertion sort moves it), then up past
+    // every one that now sorts before it: a lower end passing above an upper one ends an axis
+    // overlap, an upper end passing above a lower one starts one. Every pair whose order changes is
+    // a candidate (updateMoved settles it by its boxes).
+    for (; i > 0 && before(key, e[i - 1]); --i) {
+        const EndPoint& passed = e[i - 1];
+        if (key.is_upper != passed.is_upper && pairAllowed(key.body, passed.body))
+            dropped_.push_back(ordered(key.body, passed.body));
+        e[i] = passed;
+        slot(axis, e[i]) = static_cast<std::int32_t>(i);
+        ++stats_.swaps;
+    }
+    for (; i + 1 < e.size() && before(e[i + 1], key); ++i) {
+        const EndPoint& passed = e[i + 1];
+        if (key.is_upper != passed.is_upper && pairAllowed(key.body, passed.body))
+            dropped_.push_back(ordered(key.body, passed.body));
+        e[i] = passed;
+        slot(axis, e[i]) = static_cast<std::int32_t>(i);
+        ++stats_.swaps;
+    }
+    e[i] = key;
+    slot(axis, key) = static_cast<std::int32_t>(i);
+}
+
+void SweepAndPrune::updateMoved() {
+    // One end point at a time, its new value written just before it moves: the rest of the axis is
+    // sorted by the values it holds, so each move ends in a sorted axis, and the last one in the
+    // order the full sort gives. Pairs are gathered in dropped_ whatever the direction (an end point
+    // of a body not yet moved still holds its old value, so one pair may pass back and forth).
+    std::sort(moved_.begin(), moved_.end());
+    for (int body : moved_) {
+        if (removed_[body]) continue;
+        const Aabb& box = boxes_[body];
+        for (int axis = 0; axis < 3; ++axis)
+            for (std::int32_t upper = 0; upper < 2; ++upper) {
+                const std::size_t i = static_cast<std::size_t>(slots_[axis][2 * static_cast<std::size_t>(body) + upper]);
+                axes_[axis][i].value = upper != 0 ? box.upper[axis] : box.lower[axis];
+                moveEndPoint(axis, i);
+            }
+    }
+    // Each candidate settled by its boxes now: in the set if they overlap.
+    sortUnique(dropped_);
+    for (const BodyPair& p : dropped_) {
+        const bool had = std::binary_search(pairs_.begin(), pairs_.end(), p);
+        const bool has = boxes_[p.a].overlaps(boxes_[p.b]);
+        if (has && !had) added_.push_back(p);
+    }
+    std::erase_if(dropped_, [this](const BodyPair& p) {
+        return boxes_[p.a].overlaps(boxes_[p.b]) || !std::binary_search(pairs_.begin(), pairs_.end(), p);
+    });
+    applyChanges();
 }
 
 void SweepAndPrune::applyChanges() {
@@ -122,16 +203,24 @@ void SweepAndPrune::applyChanges() {
     auto had = [this](const BodyPair& p) { return std::binary_search(pairs_.begin(), pairs_.end(), p); };
     std::erase_if(added_, [&](const BodyPair& p) { return had(p) || std::binary_search(dropped_.begin(), dropped_.end(), p); });
     std::erase_if(dropped_, [&](const BodyPair& p) { return !had(p); });
+    stats_.pairs_added += static_cast<std::int64_t>(added_.size());
+    stats_.pairs_removed += static_cast<std::int64_t>(dropped_.size());
+    last_added_.insert(last_added_.end(), added_.begin(), added_.end());
+    last_removed_.insert(last_removed_.end(), dropped_.begin(), dropped_.end());
+    if (added_.size() + dropped_.size() <= kFewChanges) {
+        // A few changes: each put in its place (a shift of the sorted set, not a merge of it).
+        for (const BodyPair& p : dropped_) pairs_.erase(std::lower_bound(pairs_.begin(), pairs_.end(), p));
+        for (const BodyPair& p : added_) pairs_.insert(std::lower_bound(pairs_.begin(), pairs_.end(), p), p);
+        added_.clear();
+        dropped_.clear();
+        return;
+    }
     std::vector<BodyPair>& merged = merged_;
     merged.clear();
     std::set_union(pairs_.begin(), pairs_.end(), added_.begin(), added_.end(), std::back_inserter(merged));
     std::vector<BodyPair>& result = result_;  // trades storage with pairs_ below
     result.clear();
     std::set_difference(merged.begin(), merged.end(), dropped_.begin(), dropped_.end(), std::back_inserter(result));
-    stats_.pairs_added += static_cast<std::int64_t>(added_.size());
-    stats_.pairs_removed += static_cast<std::int64_t>(dropped_.size());
-    last_added_.insert(last_added_.end(), added_.begin(), added_.end());
-    last_removed_.insert(last_removed_.end(), dropped_.begin(), dropped_.end());
     pairs_.swap(result);
     added_.clear();
     dropped_.clear();
@@ -145,6 +234,7 @@ void SweepAndPrune::rebuild() {
         return x.body < y.body;
     };
     for (auto& axis : axes_) std::sort(axis.begin(), axis.end(), order);
+    indexSlots();
     std::vector<BodyPair> found;
     std::vector<int> active;
     for (const EndPoint& e : axes_[0]) {
@@ -176,10 +266,20 @@ void SweepAndPrune::update() {
     // The same boxes as at the last update: the sorted axes and the pair set stand as they are
     // (a frame of one fixed tick sweeps the boxes of the frame, then of its tick: the same).
     if (!boxes_changed_ && pending_new_ == 0) {
+        for (int body : moved_) moved_flag_[body] = 0;
+        moved_.clear();
         sortUnique(last_removed_);
         return;
     }
     boxes_changed_ = false;
+    const bool few = pending_new_ == 0 && kFewMovedFraction * moved_.size() <= boxes_.size();
+    if (few) updateMoved();
+    for (int body : moved_) moved_flag_[body] = 0;
+    moved_.clear();
+    if (few) {
+        sortUnique(last_removed_);
+        return;
+    }
     writeValues();
     if (pending_new_ > 64 && 8 * pending_new_ > bodyCount()) {
         rebuild();

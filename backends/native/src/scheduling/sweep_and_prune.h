@@ -9,7 +9,10 @@
 // sweptAabb). Pairs of two static bodies are never produced (the paper's rule: no checks between
 // real objects). pairs() is sorted by (a, b) with a < b: the same for any history of the same boxes.
 // added() and removed() are what the last update() changed in it (removeBody's pairs included), so
-// a caller keeps its own per-pair state without walking every pair at every update.
+// a caller keeps its own per-pair state without walking every pair at every update. An update after
+// few boxes changed (an impact pass's kicked bodies) moves only their end points, each from where it
+// stands (every end point's place on its axis is kept), and settles each pair whose order changed
+// by its boxes' overlap: the same set as the full sort, for a few bodies' worth of work.
 #pragma once
 
 #include <cstdint>
@@ -70,6 +73,15 @@ private:
     }
     void writeValues();
     void sortAxis(int axis);
+    /// Few boxes changed: each changed body's end points moved from where they stand to their place.
+    void updateMoved();
+    /// Moves the end point at `i` of the axis, whose value changed, to its place in the sorted order.
+    void moveEndPoint(int axis, std::size_t i);
+    /// Every end point's index on each axis, from the axes (after a change of their length).
+    void indexSlots();
+    std::int32_t& slot(int axis, const EndPoint& e) {
+        return slots_[axis][2 * static_cast<std::size_t>(e.body) + static_cast<std::size_t>(e.is_upper)];
+    }
     void rebuild();
     void onBegin(int body_x, int body_y);
     void onEnd(int body_x, int body_y);
@@ -82,6 +94,9 @@ private:
     std::vector<std::uint8_t> infinite_mass_;
     std::vector<std::uint8_t> removed_;
     std::vector<EndPoint> axes_[3];
+    std::vector<std::int32_t> slots_[3];   // per axis, end point (2 body + is_upper) -> its index
+    std::vector<std::int32_t> moved_;       // bodies whose box changed since the last update()
+    std::vector<std::uint8_t> moved_flag_;  // per body: in moved_
     std::vector<BodyPair> pairs_;     // sorted
     std::vector<BodyPair> added_;     // this update's candidate additions
     std::vector<BodyPair> dropped_;   // this update's candidate removals
