@@ -627,7 +627,7 @@ bool NativeBackend::manifoldCollision(RigidBody& a, RigidBody& b, ContactManifol
     // A resting patch (held by the last solve) approaching slower than gravity closes in a tick is
     // stopped plastically at its touching centroid, one impulse as in issue 9 (a pile's patches,
     // every tick); a faster one (an impact, a rocking plate) is resolved over its points.
-    if (resting && fastest <= resting_speed && m.pair != look_pair_) {
+    if (resting && fastest <= resting_speed) {
         selected.assign(1, m.centroid);
         selected_restitution.assign(1, 0.0);
         if (!(approach(m.centroid) > 0.0)) return false;

@@ -389,7 +389,6 @@ private:
     std::vector<double> step_point_speed_;   // lookInsideTick: each body's fastest point
     std::vector<std::uint8_t> look_mark_;   // lookIslandSolve: bodies already taken (cleared after)
     bool inside_tick_ = false;              // fixed ticks: sampling at a look inside a tick
-    int look_pair_ = -1;                    // fixed ticks: the pair a look inside a tick is at (its collision)
     std::vector<std::uint8_t> step_verdict_;   // fixedTick: per candidate pair, skipped, bounded or due
     std::vector<PairSample> step_samples_, step_resampled_, step_extra_;
     SortedIndexSet touching_;               // pairs_ indices of touching pairs (ascending)

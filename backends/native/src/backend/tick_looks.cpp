@@ -236,9 +236,7 @@ void NativeBackend::lookInsideTick(double t) {
             lookIslandSolve(samples, at, moved);
         } else {
             recordSamples(samples);
-            look_pair_ = p;
             impactPass(samples, at);
-            look_pair_ = -1;
             markSampled(samples.front());
             recycleSamples(samples);
         }
