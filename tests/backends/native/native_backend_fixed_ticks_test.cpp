@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,17 @@ NativeSettings fixedSettings(TouchingRegime regime, int threads = 1) {
 }
 
 const char* name(TouchingRegime r) { return r == TouchingRegime::Fixed ? "fixed" : "fixed-soft"; }
+
+// The deepest penetration [m] (the backend's own neutral distance query, every sample) over `frames`
+// frames of `s` with `ns`, which must repair nothing (`label` names the run); its final state hash
+// into `hash` if given.
+double deepestOver(const Scene& s, const NativeSettings& ns, int frames, std::uint64_t* hash, const std::string& label) {
+    auto be = makeBackend(s, ns);
+    for (int f = 0; f < frames; ++f) be->stepFrame(s.frame_dt);
+    EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u) << label;
+    if (hash != nullptr) *hash = stateHash(*be);
+    return be->statistics().at("native.deepest_penetration_m");
+}
 
 // A 1 kg body of `shape` alone above a real floor (top at z = 0, collision distance 1 mm), its
 // lowest point `h` above it, restitution e and friction mu against it; `body` is its index.
@@ -176,11 +188,7 @@ TEST(NativeFixedTicks, SpinningBoxOnABallIsLookedAtWhereItsFaceTurnsDown) {
     auto deepest = [&](double look_depth, int threads, std::uint64_t* hash) {
         NativeSettings ns = fixedSettings(TouchingRegime::Fixed, threads);
         ns.tick_look_depth = look_depth;
-        auto be = makeBackend(s, ns);
-        for (int f = 0; f < 90; ++f) be->stepFrame(s.frame_dt);
-        EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u) << "look depth " << look_depth;
-        if (hash != nullptr) *hash = stateHash(*be);
-        return be->statistics().at("native.deepest_penetration_m");
+        return deepestOver(s, ns, 90, hash, "look depth " + std::to_string(look_depth));
     };
     std::uint64_t one = 0, two = 0;
     EXPECT_LE(deepest(0.5, 1, &one), cd);
@@ -237,11 +245,7 @@ TEST(NativeFixedTicks, CornerThatNoPatchHeldIsLookedAtBeforeItSinks) {
     auto deepest = [&](bool features, int threads, std::uint64_t* hash) {
         NativeSettings ns = fixedSettings(TouchingRegime::Fixed, threads);
         ns.tick_look_features = features;
-        auto be = makeBackend(s, ns);
-        for (int f = 0; f < 6; ++f) be->stepFrame(s.frame_dt);
-        EXPECT_EQ(be->warnings().count("penetration_recovered"), 0u) << "features " << features;
-        if (hash != nullptr) *hash = stateHash(*be);
-        return be->statistics().at("native.deepest_penetration_m");
+        return deepestOver(s, ns, 6, hash, features ? "feature looks" : "no feature looks");
     };
     std::uint64_t one = 0, two = 0;
     EXPECT_LE(deepest(true, 1, &one), cd);
