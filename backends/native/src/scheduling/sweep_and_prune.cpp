@@ -167,9 +167,10 @@ void SweepAndPrune::moveEndPoint(int axis, std::size_t i) {
 
 void SweepAndPrune::updateMoved() {
     // One end point at a time, its new value written just before it moves: the rest of the axis is
-    // sorted by the values it holds, so each move ends in a sorted axis, and the last one in the
-    // order the full sort gives. Pairs are gathered in dropped_ whatever the direction (an end point
-    // of a body not yet moved still holds its old value, so one pair may pass back and forth).
+    // sorted by the values it holds, so each move leaves the axis sorted, the last one by the new
+    // boxes (end points of equal value may stand in another order than the full sort's; the pairs
+    // do not depend on it). Pairs are gathered in dropped_ whatever the direction (an end point of a
+    // body not yet moved still holds its old value, so one pair may pass back and forth).
     std::sort(moved_.begin(), moved_.end());
     for (int body : moved_) {
         if (removed_[body]) continue;
