@@ -33,11 +33,13 @@ int SweepAndPrune::addBody(const Aabb& box, bool infinite_mass) {
     moved_flag_.push_back(0);
     setAabb(body, box);
     // Appended after every other end point, lower before upper: as if the box came from +inf.
-    for (auto& axis : axes_) {
-        axis.push_back({std::numeric_limits<double>::infinity(), body, 0});
-        axis.push_back({std::numeric_limits<double>::infinity(), body, 1});
+    for (int axis = 0; axis < 3; ++axis) {
+        std::vector<EndPoint>& e = axes_[axis];
+        e.push_back({std::numeric_limits<double>::infinity(), body, 0});
+        e.push_back({std::numeric_limits<double>::infinity(), body, 1});
+        slots_[axis].push_back(static_cast<std::int32_t>(e.size() - 2));
+        slots_[axis].push_back(static_cast<std::int32_t>(e.size() - 1));
     }
-    indexSlots();
     ++pending_new_;
     return body;
 }
@@ -77,12 +79,9 @@ void SweepAndPrune::setAabb(int body, const Aabb& box) {
     }
     if (bad) ++stats_.invalid_boxes;
     Aabb& kept = boxes_[body];
-    if (kept.lower != clean.lower || kept.upper != clean.upper) {
-        boxes_changed_ = true;
-        if (moved_flag_[body] == 0) {
-            moved_flag_[body] = 1;
-            moved_.push_back(body);
-        }
+    if ((kept.lower != clean.lower || kept.upper != clean.upper) && moved_flag_[body] == 0) {
+        moved_flag_[body] = 1;
+        moved_.push_back(body);
     }
     kept = clean;
 }
@@ -182,16 +181,19 @@ void SweepAndPrune::updateMoved() {
                 moveEndPoint(axis, i);
             }
     }
-    // Each candidate settled by its boxes now: in the set if they overlap.
+    // Each candidate settled by its boxes now: added if they overlap and were not in the set,
+    // dropped if they were and no longer overlap.
     sortUnique(dropped_);
+    std::size_t leaving = 0;
     for (const BodyPair& p : dropped_) {
         const bool had = std::binary_search(pairs_.begin(), pairs_.end(), p);
-        const bool has = boxes_[p.a].overlaps(boxes_[p.b]);
-        if (has && !had) added_.push_back(p);
+        if (boxes_[p.a].overlaps(boxes_[p.b])) {
+            if (!had) added_.push_back(p);
+        } else if (had) {
+            dropped_[leaving++] = p;
+        }
     }
-    std::erase_if(dropped_, [this](const BodyPair& p) {
-        return boxes_[p.a].overlaps(boxes_[p.b]) || !std::binary_search(pairs_.begin(), pairs_.end(), p);
-    });
+    dropped_.resize(leaving);
     applyChanges();
 }
 
@@ -264,31 +266,22 @@ void SweepAndPrune::update() {
     last_added_.clear();
     last_removed_.swap(removed_with_bodies_);
     removed_with_bodies_.clear();
-    // The same boxes as at the last update: the sorted axes and the pair set stand as they are
-    // (a frame of one fixed tick sweeps the boxes of the frame, then of its tick: the same).
-    if (!boxes_changed_ && pending_new_ == 0) {
-        for (int body : moved_) moved_flag_[body] = 0;
-        moved_.clear();
-        sortUnique(last_removed_);
-        return;
+    if (pending_new_ == 0 && kFewMovedFraction * moved_.size() <= boxes_.size()) {
+        // Few boxes changed, or none (then the sorted axes and the pair set stand as they are: a
+        // frame of one fixed tick sweeps the boxes of the frame, then of its tick, the same).
+        if (!moved_.empty()) updateMoved();
+    } else {
+        writeValues();
+        if (pending_new_ > 64 && 8 * pending_new_ > bodyCount()) {
+            rebuild();
+        } else {
+            for (int axis = 0; axis < 3; ++axis) sortAxis(axis);
+            applyChanges();
+        }
+        pending_new_ = 0;
     }
-    boxes_changed_ = false;
-    const bool few = pending_new_ == 0 && kFewMovedFraction * moved_.size() <= boxes_.size();
-    if (few) updateMoved();
     for (int body : moved_) moved_flag_[body] = 0;
     moved_.clear();
-    if (few) {
-        sortUnique(last_removed_);
-        return;
-    }
-    writeValues();
-    if (pending_new_ > 64 && 8 * pending_new_ > bodyCount()) {
-        rebuild();
-    } else {
-        for (int axis = 0; axis < 3; ++axis) sortAxis(axis);
-        applyChanges();
-    }
-    pending_new_ = 0;
     sortUnique(last_removed_);   // removeBody's pairs and this update's, in (a, b) order
 }
 

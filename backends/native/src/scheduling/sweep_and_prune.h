@@ -77,7 +77,8 @@ private:
     void updateMoved();
     /// Moves the end point at `i` of the axis, whose value changed, to its place in the sorted order.
     void moveEndPoint(int axis, std::size_t i);
-    /// Every end point's index on each axis, from the axes (after a change of their length).
+    /// Every end point's index on each axis, read off the axes (after a removal shortened them or a
+    /// rebuild sorted them afresh).
     void indexSlots();
     std::int32_t& slot(int axis, const EndPoint& e) {
         return slots_[axis][2 * static_cast<std::size_t>(e.body) + static_cast<std::size_t>(e.is_upper)];
@@ -104,7 +105,6 @@ private:
     std::vector<BodyPair> last_added_, last_removed_;   // what the last update() changed
     std::vector<BodyPair> removed_with_bodies_;          // removeBody() since the last update()
     int pending_new_ = 0;             // bodies added since the last update()
-    bool boxes_changed_ = false;      // a setAabb() since the last update() changed a box
     SweepAndPruneStats stats_;
 };
 
