@@ -158,8 +158,11 @@ private:
     /// gap to touching; if none does, (native.tick_look_features) the first time, by bisection on
     /// predictedGap, that the pair's distance falls so (a feature no patch holds); kNever if neither.
     double closingLook(const PairState& ps, double from) const;
+    /// Fixed ticks: the body's acceleration over the rest of the tick from `from` [s]: its drift's
+    /// while held, gravity's in flight, none for static and tracked bodies.
+    Vec3 tickAcceleration(std::size_t body, double from) const;
     /// Fixed ticks: the pair's distance [m] at `at`, its bodies moved on from now (time `from`) at
-    /// their velocities and accelerations (closingLook's), each part pair queried from a copy of its
+    /// their velocities and accelerations (tickAcceleration), each part pair queried from a copy of its
     /// feature cache (the pair's own is left as it is).
     double predictedGap(const PairState& ps, double from, double at) const;
     /// Fixed ticks: a manifold of the sample has a point touching, or reaching the speculative target

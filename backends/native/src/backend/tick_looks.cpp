@@ -49,12 +49,7 @@ double NativeBackend::closingLook(const PairState& ps, double from) const {
     const RigidBody& a = bodies_[ia];
     const RigidBody& b = bodies_[ib];
     const double rest = frame_end_ - from;
-    // Each body's acceleration over the rest of the tick: its drift's while held, else gravity's.
-    auto acceleration = [&](std::size_t i) -> Vec3 {
-        if (infinite_mass_[i]) return Vec3::Zero();
-        return drift_until_[i] > from && !sub_stepped_[i].active ? drift_acceleration_[i] : scene_.gravity;
-    };
-    const Vec3 relative = acceleration(ib) - acceleration(ia);
+    const Vec3 relative = tickAcceleration(ib, from) - tickAcceleration(ia, from);
     // No point can close by `depth` within the tick (each body's fastest point, its turn's pull and
     // Coriolis terms at its outer radius): nothing to predict (a resting pile).
     const double wa = a.maxAngularSpeed(), wb = b.maxAngularSpeed();
@@ -106,23 +101,25 @@ double NativeBackend::closingLook(const PairState& ps, double from) const {
     return hi;
 }
 
+Vec3 NativeBackend::tickAcceleration(std::size_t body, double from) const {
+    if (infinite_mass_[body]) return Vec3::Zero();
+    return drift_until_[body] > from && !sub_stepped_[body].active ? drift_acceleration_[body] : scene_.gravity;
+}
+
 double NativeBackend::predictedGap(const PairState& ps, double from, double at) const {
     const double h = at - from;
     const auto ia = static_cast<std::size_t>(ps.a), ib = static_cast<std::size_t>(ps.b);
-    // Each body's frame at `at`: its centre at its acceleration (closingLook's), its turn at its
+    // Each body's frame at `at`: its centre at its acceleration over the tick, its turn at its
     // angular velocity now.
     auto posed = [&](std::size_t i) {
         const RigidBody& rb = bodies_[i];
         if (rb.is_static) return rb.framePose();
-        Vec3 acc = scene_.gravity;
-        if (infinite_mass_[i]) acc = Vec3::Zero();
-        else if (drift_until_[i] > from && !sub_stepped_[i].active) acc = drift_acceleration_[i];
         const Vec3 w = rb.angularVelocity();
         const double speed = w.norm();
         Pose p;
         p.orientation = speed > 0.0 ? Quat(Eigen::AngleAxisd(speed * h, w / speed)) * rb.orientation : rb.orientation;
         p.orientation.normalize();
-        const Vec3 com = rb.com + h * rb.velocity + 0.5 * h * h * acc;
+        const Vec3 com = rb.com + h * rb.velocity + 0.5 * h * h * tickAcceleration(i, from);
         p.position = com - p.orientation * rb.com_offset;
         return p;
     };
